@@ -1,0 +1,172 @@
+// boundary.cpp - the boundary shapes: domain walls, half-planes, boxes, bathymetry (2D polyline, 3D height
+// field). Each decides whether a grid node lies in its solid and with which outward normal.
+#include "boundary/boundary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cdmpm {
+namespace {
+
+template <int dim>
+Vec<dim> to_vec(const std::vector<double>& a) {
+  Vec<dim> v;
+  for (int i = 0; i < dim; ++i) v[i] = static_cast<Real>(a[i]);
+  return v;
+}
+
+// The faces of the domain box: a node on or beyond face (axis, side) is in the wall.
+template <int dim>
+class Walls final : public Boundary<dim> {
+ public:
+  Walls(const BoundarySpec& s, const Vec<dim>& size) : Boundary<dim>(s.condition, s.friction), size_(size) {
+    static const char* names[3] = {"x", "y", "z"};
+    for (int a = 0; a < dim; ++a)
+      for (int side = 0; side < 2; ++side) {
+        const std::string face = std::string(names[a]) + (side ? "+" : "-");
+        on_[a][side] = s.faces.empty() || std::find(s.faces.begin(), s.faces.end(), face) != s.faces.end();
+      }
+  }
+  void fold_ghosts(Grid<dim>& g) const override {
+    if (this->condition_ == BoundaryCondition::Sticky) return;
+    for (int a = 0; a < dim; ++a) {
+      size_t stride = 1, outer = 1;
+      for (int b = a + 1; b < dim; ++b) stride *= g.n_nodes[b];
+      for (int b = 0; b < a; ++b) outer *= g.n_nodes[b];
+      const Real cells = size_[a] * g.inv_dx;
+      const int top = static_cast<int>(std::lround(cells));
+      if (std::abs(cells - Real(top)) > Real(1e-6) * std::max(Real(1), cells)) continue;  // face not on a node
+      for (int side = 0; side < 2; ++side) {
+        if (!on_[a][side]) continue;
+        const int face = side ? top : 0, out = side ? 1 : -1;
+        for (int k = 1; k <= Grid<dim>::ghost; ++k) {
+          const int src = face + out * k + Grid<dim>::ghost, dst = face - out * k + Grid<dim>::ghost;
+          if (src < 0 || src >= g.n_nodes[a] || dst < 0 || dst >= g.n_nodes[a]) continue;
+#pragma omp parallel for schedule(static) collapse(2)
+          for (size_t o = 0; o < outer; ++o)
+            for (size_t in = 0; in < stride; ++in) {
+              const size_t base = o * g.n_nodes[a] * stride + in;
+              const size_t s = base + src * stride, d = base + dst * stride;
+              if (g.mass[s] <= 0) continue;
+              Vec<dim> mv = g.momentum[s];
+              mv[a] = -mv[a];
+              g.mass[d] += g.mass[s];
+              g.momentum[d] += mv;
+            }
+        }
+      }
+    }
+  }
+  void apply(const Vec<dim>& x, Vec<dim>& v) const override {
+    for (int a = 0; a < dim; ++a) {
+      if (on_[a][0] && x[a] <= 0) apply_condition<dim>(this->condition_, this->friction_, Vec<dim>::Unit(a), v);
+      if (on_[a][1] && x[a] >= size_[a]) apply_condition<dim>(this->condition_, this->friction_, -Vec<dim>::Unit(a), v);
+    }
+  }
+
+ private:
+  Vec<dim> size_;
+  std::array<std::array<bool, 2>, 3> on_{};
+};
+
+template <int dim>
+class HalfPlane final : public Boundary<dim> {
+ public:
+  explicit HalfPlane(const BoundarySpec& s)
+      : Boundary<dim>(s.condition, s.friction), point_(to_vec<dim>(s.point)), normal_(to_vec<dim>(s.normal).normalized()) {}
+  void apply(const Vec<dim>& x, Vec<dim>& v) const override {
+    if ((x - point_).dot(normal_) <= 0) apply_condition<dim>(this->condition_, this->friction_, normal_, v);
+  }
+
+ private:
+  Vec<dim> point_, normal_;
+};
+
+// Solid box: the normal is that of the nearest face.
+template <int dim>
+class BoxObstacle final : public Boundary<dim> {
+ public:
+  explicit BoxObstacle(const BoundarySpec& s)
+      : Boundary<dim>(s.condition, s.friction), min_(to_vec<dim>(s.min)), max_(to_vec<dim>(s.max)) {}
+  void apply(const Vec<dim>& x, Vec<dim>& v) const override {
+    Real best = 0;
+    Vec<dim> n = Vec<dim>::Zero();
+    for (int a = 0; a < dim; ++a) {
+      const Real lo = x[a] - min_[a], hi = max_[a] - x[a];
+      if (lo < 0 || hi < 0) return;
+      if (a == 0 || lo < best) { best = lo; n = -Vec<dim>::Unit(a); }
+      if (hi < best) { best = hi; n = Vec<dim>::Unit(a); }
+    }
+    apply_condition<dim>(this->condition_, this->friction_, n, v);
+  }
+
+ private:
+  Vec<dim> min_, max_;
+};
+
+// 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
+class Bathymetry2D final : public Boundary<2> {
+ public:
+  explicit Bathymetry2D(const BoundarySpec& s) : Boundary<2>(s.condition, s.friction), pts_(s.points) {}
+  void apply(const Vec<2>& x, Vec<2>& v) const override {
+    Real h, slope = 0;
+    if (x[0] <= pts_.front()[0]) h = static_cast<Real>(pts_.front()[1]);
+    else if (x[0] >= pts_.back()[0]) h = static_cast<Real>(pts_.back()[1]);
+    else {
+      const auto it = std::upper_bound(pts_.begin(), pts_.end(), static_cast<double>(x[0]),
+                                       [](double xv, const std::array<double, 2>& p) { return xv < p[0]; });
+      const auto& b = *it;
+      const auto& a = *(it - 1);
+      slope = static_cast<Real>((b[1] - a[1]) / (b[0] - a[0]));
+      h = static_cast<Real>(a[1]) + slope * (x[0] - static_cast<Real>(a[0]));
+    }
+    if (x[1] <= h) apply_condition<2>(condition_, friction_, Vec<2>(-slope, 1).normalized(), v);
+  }
+
+ private:
+  std::vector<std::array<double, 2>> pts_;
+};
+
+// 3D bathymetry: solid below a bilinearly interpolated height field z = h(x, y), clamped at its edges.
+class HeightField3D final : public Boundary<3> {
+ public:
+  explicit HeightField3D(const BoundarySpec& s)
+      : Boundary<3>(s.condition, s.friction), ox_(s.origin[0]), oy_(s.origin[1]), sx_(s.spacing[0]), sy_(s.spacing[1]),
+        h_(s.heights) {}
+  void apply(const Vec<3>& x, Vec<3>& v) const override {
+    const int nx = static_cast<int>(h_[0].size()), ny = static_cast<int>(h_.size());
+    const double u = std::clamp((x[0] - ox_) / sx_, 0.0, nx - 1.0), w = std::clamp((x[1] - oy_) / sy_, 0.0, ny - 1.0);
+    const int i = std::min(static_cast<int>(u), nx - 2), j = std::min(static_cast<int>(w), ny - 2);
+    const double fu = u - i, fw = w - j;
+    const double h00 = h_[j][i], h10 = h_[j][i + 1], h01 = h_[j + 1][i], h11 = h_[j + 1][i + 1];
+    const double h = (1 - fw) * ((1 - fu) * h00 + fu * h10) + fw * ((1 - fu) * h01 + fu * h11);
+    if (x[2] > h) return;
+    const double dhdx = ((1 - fw) * (h10 - h00) + fw * (h11 - h01)) / sx_;
+    const double dhdy = ((1 - fu) * (h01 - h00) + fu * (h11 - h10)) / sy_;
+    apply_condition<3>(condition_, friction_, Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized(), v);
+  }
+
+ private:
+  double ox_, oy_, sx_, sy_;
+  std::vector<std::vector<double>> h_;
+};
+
+}  // namespace
+
+template <int dim>
+std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& s, const Vec<dim>& domain_size) {
+  if (s.type == "walls") return std::make_unique<Walls<dim>>(s, domain_size);
+  if (s.type == "half_plane") return std::make_unique<HalfPlane<dim>>(s);
+  if (s.type == "box") return std::make_unique<BoxObstacle<dim>>(s);
+  if (s.type == "bathymetry") {
+    if constexpr (dim == 2) return std::make_unique<Bathymetry2D>(s);
+    else return std::make_unique<HeightField3D>(s);
+  }
+  throw std::invalid_argument("unknown boundary type '" + s.type + "'");
+}
+
+template std::unique_ptr<Boundary<2>> make_boundary<2>(const BoundarySpec&, const Vec<2>&);
+template std::unique_ptr<Boundary<3>> make_boundary<3>(const BoundarySpec&, const Vec<3>&);
+
+}  // namespace cdmpm

@@ -1,0 +1,52 @@
+// particles.h - material points stored as a structure of arrays.
+//
+// Each field is its own contiguous array so a phase of the step streams only what it needs. A particle
+// carries its mass m, reference volume V0 (volume in the unstressed state, so V = J V0), position x,
+// velocity v, APIC affine matrix C (the particle's velocity gradient estimate, Jiang et al. 2015), the
+// volume ratio J = det F, and its material index.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/types.h"
+
+namespace cdmpm {
+
+template <int dim>
+struct Particles {
+  std::vector<Vec<dim>> x, v;
+  std::vector<Mat<dim>> C;
+  std::vector<Real> mass, volume0, J;
+  std::vector<int32_t> material;
+
+  size_t size() const { return x.size(); }
+
+  void add(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real V0, Real Jp, int32_t mat) {
+    x.push_back(xp);
+    v.push_back(vp);
+    C.push_back(Mat<dim>::Zero());
+    mass.push_back(m);
+    volume0.push_back(V0);
+    J.push_back(Jp);
+    material.push_back(mat);
+  }
+
+  // Applies fn to every per-particle array (used to reorder, save and load them generically).
+  template <class Fn>
+  void for_each_array(Fn&& fn) {
+    fn(x); fn(v); fn(C); fn(mass); fn(volume0); fn(J); fn(material);
+  }
+
+  // Reorders all arrays so that new particle k is old particle order[k].
+  void permute(const std::vector<uint32_t>& order) {
+    for_each_array([&](auto& a) {
+      std::remove_reference_t<decltype(a)> out(a.size());
+#pragma omp parallel for schedule(static)
+      for (size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
+      a.swap(out);
+    });
+  }
+};
+
+}  // namespace cdmpm

@@ -1,0 +1,32 @@
+// grid_update.h - grid velocity update: symplectic Euler on the grid, then boundary conditions.
+//
+//   v_i = (mv)_i / m_i + dt g      for every node with mass (the stress impulse is already in (mv)_i),
+// then each boundary's condition on the nodes inside its solid (boundary/boundary.h).
+// Nodes with mass below a tiny fraction of the typical node mass are treated as empty (v = 0).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "boundary/boundary.h"
+#include "grid/grid.h"
+
+namespace cdmpm {
+
+template <int dim>
+void grid_update(Grid<dim>& g, const Vec<dim>& gravity, Real dt, const std::vector<std::unique_ptr<Boundary<dim>>>& bcs) {
+  const size_t n = g.node_count();
+#pragma omp parallel for schedule(static)
+  for (size_t k = 0; k < n; ++k) {
+    const Real m = g.mass[k];
+    if (m <= 0) continue;
+    Vec<dim> v = g.momentum[k] / m + dt * gravity;
+    if (!bcs.empty()) {
+      const Vec<dim> x = g.position(g.node(k));
+      for (const auto& b : bcs) b->apply(x, v);
+    }
+    g.momentum[k] = v;
+  }
+}
+
+}  // namespace cdmpm

@@ -1,0 +1,35 @@
+// checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
+//
+// Layout: magic "CDMPMCK1", dim, sizeof(Real), particle count, the run metadata, then every particle
+// array raw (Particles::for_each_array order). Written to a temporary file and renamed, so the previous
+// checkpoint stays valid until the new one is complete. A resumed run continues bit for bit: the grid,
+// particle bins and speeds are all recomputed from the particle state.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/particles.h"
+
+namespace cdmpm {
+
+struct CheckpointMeta {
+  double time = 0;
+  long long steps = 0;
+  long long frame_index = 0;   // index of the last frame written
+  long long probe_index = 0;   // index of the last probe sample written
+  double wave_dt_at_start = 0;
+  std::vector<double> still_levels;
+  std::vector<std::pair<double, std::string>> frames;  // (time, file) written so far, for particles.pvd
+  uint64_t probes_csv_bytes = 0;                        // size of probes.csv at the checkpoint
+};
+
+template <int dim>
+void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& meta);
+// Throws std::runtime_error naming the file if it is missing, truncated or of another dim/precision.
+template <int dim>
+CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p);
+
+}  // namespace cdmpm

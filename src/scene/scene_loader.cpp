@@ -1,0 +1,481 @@
+// scene_loader.cpp - JSON scene file -> validated Scene (see scene_loader.h and docs/scenes.md).
+//
+// The file is parsed (rejecting duplicate keys), --set overrides are applied to the json, and the result is
+// walked once by a Loader that checks every key against the allowed set of its object, the type and range
+// of every value and the cross references (material names, shapes and probes inside the domain), filling
+// defaults as it goes. Each check goes through a few generic helpers (number/integer/string/numbers...) so
+// all messages share the form "<file>: <json.path>: expected <what>, got <value>".
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace cdmpm {
+namespace {
+
+using json = nlohmann::json;
+using Strings = std::vector<std::string>;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string show(const json& v) {
+  std::string s = v.dump();
+  return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+}
+
+std::string join(const Strings& items, bool quote = false) {
+  std::string out;
+  for (const auto& it : items) out += (out.empty() ? "" : ", ") + (quote ? '"' + it + '"' : it);
+  return out;
+}
+
+bool contains(const Strings& items, const std::string& s) {
+  return std::find(items.begin(), items.end(), s) != items.end();
+}
+
+// Letters, digits and '_' only (usable as a CSV column and as a --set path component).
+bool is_identifier(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+}
+
+// Interval of allowed numbers, open or closed at each end.
+struct Range {
+  double lo = -kInf, hi = kInf;
+  bool lo_open = false, hi_open = false;
+  bool contains(double v) const { return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi); }
+  std::string describe() const {
+    if (lo == -kInf && hi == kInf) return "";
+    if (hi == kInf) return (lo_open ? " > " : " >= ") + fmt(lo);
+    if (lo == -kInf) return (hi_open ? " < " : " <= ") + fmt(hi);
+    return std::string(" in ") + (lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]");
+  }
+};
+Range gt(double lo) { return {lo, kInf, true, false}; }
+Range ge(double lo) { return {lo, kInf, false, false}; }
+
+// A json value together with its path in the scene ("bodies[0].shape.min").
+struct Node {
+  const json& j;
+  std::string path;
+  std::string child(const std::string& key) const { return path.empty() ? key : path + "." + key; }
+  bool has(const std::string& key) const { return j.contains(key); }
+  Node operator[](const std::string& key) const { return {j.at(key), child(key)}; }
+  Node operator[](size_t i) const { return {j.at(i), path + "[" + std::to_string(i) + "]"}; }
+};
+
+std::string box_text(const std::vector<double>& lo, const std::vector<double>& hi) {
+  std::string s;
+  for (size_t a = 0; a < lo.size(); ++a) s += (a ? " x [" : "[") + fmt(lo[a]) + ", " + fmt(hi[a]) + "]";
+  return s;
+}
+
+class Loader {
+ public:
+  explicit Loader(std::string file) : file_(std::move(file)) {}
+
+  Scene load(const json& j) {
+    Node root{j, ""};
+    object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
+                  "output"});
+    s_.dim = dim_ = integer(required(root, "dim"), {2, 3});
+    s_.name = root.has("name") ? string(root["name"]) : std::filesystem::path(file_).stem().string();
+    if (s_.name.empty()) expected(root["name"], "a non-empty string");
+    domain(required(root, "domain"));
+    time(required(root, "time"));
+    s_.gravity = root.has("gravity") ? numbers(root["gravity"], dim_) : std::vector<double>(dim_, 0.0);
+    if (!root.has("gravity")) s_.gravity.back() = -9.81;
+    materials(required(root, "materials"));
+    Node bodies = required(root, "bodies");
+    for (size_t i = 0, n = array(bodies, 1, "a non-empty array of bodies"); i < n; ++i) body(bodies[i]);
+    if (root.has("boundaries")) {
+      Node bs = root["boundaries"];
+      for (size_t i = 0, n = array(bs, 0, "an array of boundaries"); i < n; ++i) boundary(bs[i]);
+    }
+    probes(root);
+    if (root.has("output")) {
+      Node o = root["output"];
+      object(o, {"frames", "checkpoint_every"});
+      s_.output.frames = o.has("frames") ? boolean(o["frames"]) : true;
+      s_.output.checkpoint_every = o.has("checkpoint_every") ? integer(o["checkpoint_every"], ge(0)) : 0;
+    }
+    return std::move(s_);
+  }
+
+ private:
+  // ---- generic checks -------------------------------------------------------------------------------
+  [[noreturn]] void fail(const std::string& path, const std::string& msg) const {
+    throw SceneError(file_ + ": " + (path.empty() ? "(root)" : path) + ": " + msg);
+  }
+  [[noreturn]] void expected(const Node& n, const std::string& what) const {
+    fail(n.path, "expected " + what + ", got " + show(n.j));
+  }
+  // `n` must be an object whose keys are all in `allowed`.
+  void object(const Node& n, const Strings& allowed) const {
+    if (!n.j.is_object()) expected(n, "an object");
+    for (const auto& item : n.j.items())
+      if (!contains(allowed, item.key())) fail(n.child(item.key()), "unknown key (allowed: " + join(allowed) + ")");
+  }
+  Node required(const Node& n, const std::string& key) const {
+    if (!n.has(key)) fail(n.child(key), "required key missing");
+    return n[key];
+  }
+  size_t array(const Node& n, size_t min_size, const std::string& what) const {
+    if (!n.j.is_array() || n.j.size() < min_size) expected(n, what);
+    return n.j.size();
+  }
+  double number(const Node& n, Range r = {}, const std::string& note = "") const {
+    if (!n.j.is_number() || !std::isfinite(n.j.get<double>()) || !r.contains(n.j.get<double>()))
+      expected(n, "a number" + r.describe() + note);
+    return n.j.get<double>();
+  }
+  double number(const Node& parent, const std::string& key, Range r, double fallback) const {
+    return parent.has(key) ? number(parent[key], r) : fallback;
+  }
+  int integer(const Node& n, Range r) const {
+    if (!n.j.is_number_integer() || !r.contains(n.j.get<double>()) || std::abs(n.j.get<double>()) > INT_MAX)
+      expected(n, "an integer" + r.describe());
+    return n.j.get<int>();
+  }
+  bool boolean(const Node& n) const {
+    if (!n.j.is_boolean()) expected(n, "true or false");
+    return n.j.get<bool>();
+  }
+  std::string string(const Node& n, const Strings& choices = {}) const {
+    if (!n.j.is_string() || (!choices.empty() && !contains(choices, n.j.get<std::string>())))
+      expected(n, choices.empty() ? "a string" : "one of " + join(choices, true));
+    return n.j.get<std::string>();
+  }
+  std::vector<double> numbers(const Node& n, size_t count, Range r = {}) const {
+    array(n, 0, "an array of " + std::to_string(count) + " numbers" + r.describe());
+    if (n.j.size() != count) expected(n, "an array of " + std::to_string(count) + " numbers" + r.describe());
+    std::vector<double> v(count);
+    for (size_t i = 0; i < count; ++i) v[i] = number(n[i], r);
+    return v;
+  }
+  std::vector<std::array<double, 2>> pairs(const Node& n, size_t min_count) const {
+    size_t count = array(n, min_count, "an array of at least " + std::to_string(min_count) + " [x, y] pairs");
+    std::vector<std::array<double, 2>> v(count);
+    for (size_t i = 0; i < count; ++i) {
+      auto p = numbers(n[i], 2);
+      v[i] = {p[0], p[1]};
+    }
+    return v;
+  }
+  // Reads "min" and "max" of `n` (dim numbers each) and checks min < max on every axis.
+  void min_max(const Node& n, std::vector<double>& lo, std::vector<double>& hi) const {
+    lo = numbers(required(n, "min"), dim_);
+    hi = numbers(required(n, "max"), dim_);
+    for (int a = 0; a < dim_; ++a)
+      if (!(hi[a] > lo[a])) expected(n["max"], "max > min on every axis (min = " + show(n["min"].j) + ")");
+  }
+  // Checks that the first x.size() coordinates lie inside the domain (with a relative tolerance).
+  void inside(const Node& n, const std::vector<double>& lo, const std::vector<double>& hi,
+              const std::string& what) const {
+    std::vector<double> zero(lo.size(), 0.0), size(s_.domain.size.begin(), s_.domain.size.begin() + lo.size());
+    for (size_t a = 0; a < lo.size(); ++a) {
+      double tol = 1e-12 * size[a];
+      if (lo[a] < -tol || hi[a] > size[a] + tol)
+        fail(n.path, "expected " + what + " inside the domain " + box_text(zero, size) + ", got " +
+                         (lo == hi ? show(n.j) : "bounding box " + box_text(lo, hi)));
+    }
+  }
+  int material_ref(const Node& n) const {
+    int index = s_.material_index(string(n));
+    if (index < 0) {
+      Strings names;
+      for (const auto& m : s_.materials) names.push_back(m.name);
+      expected(n, "the name of a material (" + join(names, true) + ")");
+    }
+    return index;
+  }
+
+  // ---- sections --------------------------------------------------------------------------------------
+  void domain(const Node& d) {
+    object(d, {"size", "dx"});
+    s_.domain.size = numbers(required(d, "size"), dim_, gt(0));
+    double smallest = *std::min_element(s_.domain.size.begin(), s_.domain.size.end());
+    s_.domain.dx = number(required(d, "dx"), {0, smallest / 4, true, false}, " (at most min(domain.size)/4)");
+  }
+
+  void time(const Node& t) {
+    object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt"});
+    TimeSpec& ts = s_.time;
+    ts.end = number(required(t, "end"), gt(0));
+    ts.frame_interval = number(required(t, "frame_interval"), {0, ts.end, true, false}, " (at most time.end)");
+    ts.cfl = number(t, "cfl", {0, 1, true, false}, 0.4);
+    ts.wave_cfl = number(t, "wave_cfl", {0, 1, true, false}, 0.4);
+    ts.max_dt = number(t, "max_dt", ge(0), 0.0);
+  }
+
+  void materials(const Node& ms) {
+    if (!ms.j.is_object() || ms.j.empty()) expected(ms, "an object with at least one material");
+    for (const auto& item : ms.j.items()) {
+      Node m = ms[item.key()];
+      if (!is_identifier(item.key()))
+        fail(m.path, "expected a material name of letters, digits and '_', got \"" + item.key() + "\"");
+      if (!m.j.is_object()) expected(m, "an object");
+      MaterialSpec spec;
+      spec.name = item.key();
+      spec.type = string(required(m, "type"), {"water"});
+      object(m, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
+      spec.density = number(required(m, "density"), gt(0));
+      spec.bulk_modulus = number(required(m, "bulk_modulus"), gt(0));
+      spec.gamma = number(m, "gamma", gt(0), 7.0);
+      spec.viscosity = number(m, "viscosity", ge(0), 0.0);
+      s_.materials.push_back(spec);
+    }
+  }
+
+  void body(const Node& b) {
+    object(b, {"material", "particles_per_cell", "shape", "velocity", "hydrostatic", "surface_level"});
+    BodySpec spec;
+    spec.material_index = material_ref(required(b, "material"));
+    spec.material = s_.materials[spec.material_index].name;
+    Node ppc = required(b, "particles_per_cell");
+    spec.particles_per_cell = integer(ppc, ge(1));
+    int per_axis = static_cast<int>(std::lround(std::pow(spec.particles_per_cell, 1.0 / dim_)));
+    if (std::lround(std::pow(per_axis, dim_)) != spec.particles_per_cell)
+      expected(ppc, dim_ == 2 ? "an integer n^2 (1, 4, 9, 16, ...)" : "an integer n^3 (1, 8, 27, 64, ...)");
+    spec.shape = shape(required(b, "shape"));
+    spec.velocity = b.has("velocity") ? numbers(b["velocity"], dim_) : std::vector<double>(dim_, 0.0);
+    spec.hydrostatic = b.has("hydrostatic") ? boolean(b["hydrostatic"]) : true;
+    if (b.has("surface_level")) spec.surface_level = number(b["surface_level"]);
+    s_.bodies.push_back(std::move(spec));
+  }
+
+  ShapeSpec shape(const Node& n) {
+    if (!n.j.is_object()) expected(n, "an object");
+    ShapeSpec sh;
+    sh.type = string(required(n, "type"), dim_ == 2 ? Strings{"box", "ball", "polygon"} : Strings{"box", "ball"});
+    std::vector<double> lo, hi;
+    if (sh.type == "box") {
+      object(n, {"type", "min", "max"});
+      min_max(n, sh.min, sh.max);
+      lo = sh.min, hi = sh.max;
+    } else if (sh.type == "ball") {
+      object(n, {"type", "center", "radius"});
+      sh.center = numbers(required(n, "center"), dim_);
+      sh.radius = number(required(n, "radius"), gt(0));
+      for (double c : sh.center) lo.push_back(c - sh.radius), hi.push_back(c + sh.radius);
+    } else {
+      object(n, {"type", "vertices"});
+      sh.vertices = pairs(required(n, "vertices"), 3);
+      double area2 = 0;
+      lo = {kInf, kInf}, hi = {-kInf, -kInf};
+      for (size_t i = 0; i < sh.vertices.size(); ++i) {
+        const auto &p = sh.vertices[i], &q = sh.vertices[(i + 1) % sh.vertices.size()];
+        area2 += p[0] * q[1] - q[0] * p[1];
+        for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+      }
+      if (area2 == 0) expected(n["vertices"], "a polygon with nonzero area");
+    }
+    inside(n, lo, hi, "a shape");
+    return sh;
+  }
+
+  void boundary(const Node& n) {
+    if (!n.j.is_object()) expected(n, "an object");
+    BoundarySpec spec;
+    spec.type = string(required(n, "type"), {"walls", "half_plane", "box", "bathymetry"});
+    Strings keys = {"type", "condition", "friction"};
+    Strings extra = spec.type == "walls"        ? Strings{"faces"}
+                    : spec.type == "half_plane" ? Strings{"point", "normal"}
+                    : spec.type == "box"        ? Strings{"min", "max"}
+                    : dim_ == 2                 ? Strings{"points"}
+                                                : Strings{"origin", "spacing", "heights"};
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    object(n, keys);
+    std::string condition = n.has("condition") ? string(n["condition"], {"sticky", "slip", "separate"}) : "separate";
+    spec.condition = condition == "sticky" ? BoundaryCondition::Sticky
+                     : condition == "slip" ? BoundaryCondition::Slip
+                                           : BoundaryCondition::Separate;
+    spec.friction = number(n, "friction", ge(0), 0.0);
+    if (spec.type == "walls") {
+      Strings all = {"x-", "x+", "y-", "y+"};
+      if (dim_ == 3) all.insert(all.end(), {"z-", "z+"});
+      if (!n.has("faces")) spec.faces = all;
+      if (n.has("faces")) {
+        Node faces = n["faces"];
+        for (size_t i = 0, count = array(faces, 1, "a non-empty array of faces"); i < count; ++i) {
+          std::string face = string(faces[i], all);
+          if (contains(spec.faces, face)) expected(faces[i], "a face not listed before");
+          spec.faces.push_back(face);
+        }
+      }
+    } else if (spec.type == "half_plane") {
+      spec.point = numbers(required(n, "point"), dim_);
+      spec.normal = numbers(required(n, "normal"), dim_);
+      double norm = 0;
+      for (double c : spec.normal) norm += c * c;
+      if (norm == 0) expected(n["normal"], "a nonzero vector");
+      for (double& c : spec.normal) c /= std::sqrt(norm);
+    } else if (spec.type == "box") {
+      min_max(n, spec.min, spec.max);
+    } else if (dim_ == 2) {
+      Node points = required(n, "points");
+      spec.points = pairs(points, 2);
+      for (size_t i = 1; i < spec.points.size(); ++i)
+        if (!(spec.points[i][0] > spec.points[i - 1][0]))
+          expected(points[i], "a point with x > " + fmt(spec.points[i - 1][0]) + " (x strictly increasing)");
+    } else {
+      spec.origin = numbers(required(n, "origin"), 2);
+      spec.spacing = numbers(required(n, "spacing"), 2, gt(0));
+      Node heights = required(n, "heights");
+      size_t rows = array(heights, 2, "an array of at least 2 rows of heights");
+      size_t cols = array(heights[0], 2, "an array of at least 2 heights");
+      for (size_t r = 0; r < rows; ++r) spec.heights.push_back(numbers(heights[r], cols));
+    }
+    s_.boundaries.push_back(std::move(spec));
+  }
+
+  void probes(const Node& root) {
+    s_.output.probe_interval = s_.time.frame_interval / 10;
+    if (!root.has("probes")) return;
+    Node p = root["probes"];
+    object(p, {"interval", "list"});
+    s_.output.probe_interval = number(p, "interval", gt(0), s_.output.probe_interval);
+    if (!p.has("list")) return;
+    Node list = p["list"];
+    for (size_t i = 0, count = array(list, 0, "an array of probes"); i < count; ++i) probe(list[i]);
+  }
+
+  void probe(const Node& n) {
+    static const Strings kTypes = {"wave_gauge",     "front",        "pressure", "kinetic_energy",
+                                   "gravitational_energy", "elastic_energy", "total_energy", "mass"};
+    if (!n.j.is_object()) expected(n, "an object");
+    ProbeSpec spec;
+    spec.type = string(required(n, "type"), kTypes);
+    Strings keys = spec.type == "pressure"     ? Strings{"position"}
+                   : spec.type == "wave_gauge" ? Strings{"position", "still_level", "material"}
+                   : spec.type == "front"      ? Strings{"material", "axis", "direction"}
+                                               : Strings{"material"};
+    keys.insert(keys.end(), {"name", "type"});
+    object(n, keys);
+    Node name = required(n, "name");
+    spec.name = string(name);
+    if (!is_identifier(spec.name) || spec.name == "time")
+      expected(name, "a non-empty name of letters, digits and '_', other than \"time\"");
+    for (const auto& other : s_.probes)
+      if (other.name == spec.name) expected(name, "a unique probe name");
+    if (n.has("material")) spec.material_index = material_ref(n["material"]), spec.material = string(n["material"]);
+    if (spec.type == "pressure" || spec.type == "wave_gauge") {
+      Node pos = required(n, "position");
+      spec.position = numbers(pos, spec.type == "pressure" ? dim_ : dim_ - 1);
+      inside(pos, spec.position, spec.position, "a position");
+    }
+    if (n.has("still_level")) spec.still_level = number(n["still_level"]);
+    if (n.has("axis")) spec.axis = integer(n["axis"], {0, double(dim_ - 1)});
+    if (n.has("direction")) {
+      Node dir = n["direction"];
+      if (!dir.j.is_number_integer() || std::abs(dir.j.get<double>()) != 1) expected(dir, "an integer 1 or -1");
+      spec.direction = dir.j.get<int>();
+    }
+    s_.probes.push_back(std::move(spec));
+  }
+
+  std::string file_;
+  Scene s_;
+  int dim_ = 2;
+};
+
+// json::parse with duplicate object keys rejected (nlohmann would silently keep the last one).
+json parse_rejecting_duplicates(std::istream& in, const std::string& file) {
+  struct Frame {
+    bool is_array = false;
+    size_t index = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Frame> stack;
+  auto next_value = [&] {
+    if (!stack.empty() && stack.back().is_array) ++stack.back().index;
+  };
+  auto callback = [&](int, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    if (event == E::object_start || event == E::array_start) stack.emplace_back().is_array = event == E::array_start;
+    if (event == E::object_end || event == E::array_end) stack.pop_back(), next_value();
+    if (event == E::value) next_value();
+    if (event == E::key) {
+      stack.back().key = parsed.get<std::string>();
+      if (!stack.back().keys.insert(stack.back().key).second) {
+        std::string path;
+        for (const auto& f : stack)
+          path += f.is_array ? "[" + std::to_string(f.index) + "]" : (path.empty() ? "" : ".") + f.key;
+        throw SceneError(file + ": " + path + ": duplicate key (each key may appear only once in an object)");
+      }
+    }
+    return true;
+  };
+  return json::parse(in, callback);
+}
+
+}  // namespace
+
+void apply_override(json& j, const std::string& text, const std::string& file) {
+  auto fail = [&](const std::string& why) { throw SceneError(file + ": --set '" + text + "': " + why); };
+  size_t eq = text.find('=');
+  if (eq == std::string::npos) fail("expected key.path=value");
+  Strings parts;
+  std::stringstream key(text.substr(0, eq));
+  for (std::string part; std::getline(key, part, '.');) parts.push_back(part);
+  if (parts.empty() || text[eq - 1] == '.' || contains(parts, "")) fail("empty component in key path");
+  json* cur = &j;
+  std::string walked;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const std::string& c = parts[k];
+    std::string here = walked.empty() ? c : walked + "." + c;
+    if (cur->is_array()) {
+      if (c.size() > 9 || !std::all_of(c.begin(), c.end(), [](unsigned char ch) { return std::isdigit(ch); }))
+        fail((walked.empty() ? "(root)" : walked) + " is an array, expected a numeric index, got '" + c + "'");
+      size_t index = std::stoul(c);
+      if (index >= cur->size()) fail(here + " does not exist (array has " + std::to_string(cur->size()) + " elements)");
+      cur = &(*cur)[index];
+    } else if (cur->is_object()) {
+      if (k + 1 < parts.size() && !cur->contains(c)) fail(here + " does not exist");
+      cur = &(*cur)[c];
+    } else {
+      fail((walked.empty() ? "(root)" : walked) + " is not an object or array, cannot index it with '" + c + "'");
+    }
+    walked = here;
+  }
+  std::string value = text.substr(eq + 1);
+  try {
+    *cur = json::parse(value);
+  } catch (const json::exception&) {
+    *cur = value;
+  }
+}
+
+Scene scene_from_json(json j, const std::string& path, const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides) apply_override(j, o, path);
+  Scene scene = Loader(path).load(j);
+  scene.path = path;
+  scene.json = std::move(j);
+  return scene;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open file");
+  json j;
+  try {
+    j = parse_rejecting_duplicates(in, path);
+  } catch (const json::parse_error& e) {
+    throw SceneError(path + ": parse error: " + e.what());
+  }
+  return scene_from_json(std::move(j), path, overrides);
+}
+
+}  // namespace cdmpm

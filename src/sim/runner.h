@@ -1,0 +1,28 @@
+// runner.h - drives a simulation from t = 0 (or a checkpoint) to the scene's end time: picks each time step,
+// hits output times exactly, writes frames, probes, checkpoints and summary.json, shows progress, and
+// stops with status "unstable" and a clear reason if the state goes bad.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace cdmpm {
+
+struct RunOptions {
+  std::string out_dir;
+  int threads = 0;       // 0 = OpenMP default
+  bool resume = false;   // continue from out_dir/checkpoint.bin
+  bool progress = true;  // progress line on stderr
+};
+
+struct RunResult {
+  std::string status;  // "completed" or "unstable"
+  std::string reason;
+  int exit_code = 0;   // 0 completed, 3 unstable
+};
+
+// Exceptions: std::runtime_error for I/O problems (unwritable output, bad checkpoint).
+RunResult run_scene(const Scene& scene, const RunOptions& options);
+
+}  // namespace cdmpm

@@ -1,0 +1,162 @@
+// simulation.cpp - building the initial state from a scene, and the MPM step (see simulation.h).
+#include "sim/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/bspline.h"
+#include "grid/grid_update.h"
+#include "material/constitutive_update.h"
+#include "material/stress.h"
+#include "sim/shape.h"
+#include "transfer/g2p.h"
+#include "transfer/p2g.h"
+
+namespace cdmpm {
+
+template <int dim>
+Simulation<dim>::Simulation(const Scene& s) : scene(s) {
+  for (int a = 0; a < dim; ++a) {
+    domain_size[a] = static_cast<Real>(s.domain.size[a]);
+    gravity[a] = static_cast<Real>(s.gravity[a]);
+  }
+  grid = Grid<dim>(domain_size, static_cast<Real>(s.domain.dx));
+  for (const MaterialSpec& ms : s.materials) {
+    Material m;
+    m.name = ms.name;
+    m.density = static_cast<Real>(ms.density);
+    if (ms.type == "water") {
+      m.kind = MaterialKind::Water;
+      m.water = {static_cast<Real>(ms.density), static_cast<Real>(ms.bulk_modulus), static_cast<Real>(ms.gamma),
+                 static_cast<Real>(ms.viscosity)};
+    }
+    materials.push_back(m);
+  }
+  for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(b, domain_size));
+  for (const BodySpec& b : s.bodies) seed_body(b);
+
+  // Explicit viscous diffusion limit dt <= dx^2 rho / (2 dim mu), scaled by wave_cfl.
+  viscous_dt_ = std::numeric_limits<Real>::max();
+  for (const Material& m : materials)
+    if (m.kind == MaterialKind::Water && m.water.mu > 0)
+      viscous_dt_ = std::min(viscous_dt_, grid.dx * grid.dx * m.density / (Real(2 * dim) * m.water.mu));
+  update_speeds();
+  wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
+}
+
+// Fills a body's shape with particles on the lattice (k + 1/2) dx / n, n = ppc^(1/dim) per axis, so bodies
+// that share a face tile without gaps or overlaps. Water is pre-compressed to hydrostatic equilibrium:
+// at depth d below the surface level, p = rho0 |g| d and J = J(p) from the equation of state.
+template <int dim>
+void Simulation<dim>::seed_body(const BodySpec& body) {
+  const int n = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
+  const double h = scene.domain.dx / n;
+  const Shape<dim> shape(body.shape);
+  Material& mat = materials[body.material_index];
+  mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * h));
+  const double vol = std::pow(h, dim);
+  const double surface = body.surface_level ? *body.surface_level : shape.upper(vertical_axis<dim>);
+  const double g = -gravity[vertical_axis<dim>];
+  Vec<dim> v0 = Vec<dim>::Zero();
+  for (int a = 0; a < dim && !body.velocity.empty(); ++a) v0[a] = static_cast<Real>(body.velocity[a]);
+
+  IVec<dim> lo, hi;
+  for (int a = 0; a < dim; ++a) {
+    lo[a] = static_cast<int>(std::floor(shape.lower(a) / h - 0.5));
+    hi[a] = static_cast<int>(std::ceil(shape.upper(a) / h - 0.5));
+  }
+  IVec<dim> k = lo;
+  while (true) {
+    Eigen::Matrix<double, dim, 1> x;
+    for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h;
+    if (shape.contains(x)) {
+      Real J = 1;
+      if (mat.kind == MaterialKind::Water && body.hydrostatic && g > 0) {
+        const double depth = std::max(0.0, surface - x[vertical_axis<dim>]);
+        J = mat.water.volume_ratio_at_pressure(static_cast<Real>(mat.density * g * depth));
+      }
+      // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
+      const Real V0 = static_cast<Real>(vol) / J;
+      particles.add(x.template cast<Real>(), v0, mat.density * V0, V0, J, body.material_index);
+    }
+    int a = dim - 1;
+    for (; a >= 0; --a) {
+      if (++k[a] <= hi[a]) break;
+      k[a] = lo[a];
+    }
+    if (a < 0) break;
+  }
+}
+
+template <int dim>
+void Simulation<dim>::update_speeds() {
+  const size_t n = particles.size();
+  Real vmax2 = 0, cmax = 0;
+#pragma omp parallel for schedule(static) reduction(max : vmax2, cmax)
+  for (size_t q = 0; q < n; ++q) {
+    vmax2 = std::max(vmax2, particles.v[q].squaredNorm());
+    cmax = std::max(cmax, particle_wave_speed(materials[particles.material[q]], particles, q));
+  }
+  max_speed = std::sqrt(vmax2);
+  max_wave_speed = cmax;
+}
+
+template <int dim>
+Real Simulation<dim>::stable_dt() const {
+  const Real dx = grid.dx;
+  Real dt = viscous_dt_ * static_cast<Real>(scene.time.wave_cfl);
+  if (max_speed > 0) dt = std::min(dt, static_cast<Real>(scene.time.cfl) * dx / max_speed);
+  if (max_wave_speed > 0) dt = std::min(dt, static_cast<Real>(scene.time.wave_cfl) * dx / max_wave_speed);
+  if (scene.time.max_dt > 0) dt = std::min(dt, static_cast<Real>(scene.time.max_dt));
+  return dt;
+}
+
+template <int dim>
+void Simulation<dim>::step(Real dt) {
+  if (steps % reorder_interval == 0) {
+    bins_.build(particles, grid);
+    particles.permute(bins_.order);
+  }
+  bins_.build(particles, grid);
+  grid.clear();
+  p2g(particles, materials, bins_, grid, dt);
+  for (const auto& b : boundaries) b->fold_ghosts(grid);
+  grid_update(grid, gravity, dt, boundaries);
+  g2p(particles, grid);
+  constitutive_update(particles, materials, dt);
+  update_speeds();
+  time += dt;
+  ++steps;
+}
+
+template <int dim>
+std::optional<std::string> Simulation<dim>::check_state() const {
+  const size_t n = particles.size();
+  const Real margin = grid.dx;
+  size_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (size_t q = 0; q < n; ++q) {
+    const auto& x = particles.x[q];
+    bool ok = x.allFinite() && particles.v[q].allFinite() && std::isfinite(particles.J[q]) && particles.J[q] > 0;
+    for (int a = 0; a < dim && ok; ++a) ok = x[a] >= -margin && x[a] <= domain_size[a] + margin;
+    if (!ok) bad = std::min(bad, q);
+  }
+  if (bad == n) return std::nullopt;
+  std::ostringstream os;
+  const auto& x = particles.x[bad];
+  const auto& v = particles.v[bad];
+  const char* why = !x.allFinite() || !v.allFinite() ? "non-finite position or velocity"
+                    : !(particles.J[bad] > 0 && std::isfinite(particles.J[bad])) ? "non-positive or non-finite volume ratio J"
+                                                                                  : "particle left the domain";
+  os << why << ": particle " << bad << " (material '" << materials[particles.material[bad]].name << "') at x = ("
+     << x.transpose() << ") m, v = (" << v.transpose() << ") m/s, J = " << particles.J[bad] << ", t = " << time
+     << " s, step " << steps;
+  return os.str();
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace cdmpm

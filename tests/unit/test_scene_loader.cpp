@@ -1,0 +1,244 @@
+// test_scene_loader.cpp - scene loading: every malformed scene in tests/bad_scenes is rejected with the
+// expected message, a valid scene round-trips with defaults filled, and --set overrides behave.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene_loader.h"
+
+namespace cdmpm {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+const fs::path kBadScenes = fs::path(CDMPM_SOURCE_DIR) / "tests" / "bad_scenes";
+
+// A small valid 2D scene using only required keys.
+json minimal_scene() {
+  return json::parse(R"({
+    "dim": 2,
+    "domain": {"size": [0.6, 0.3], "dx": 0.01},
+    "time": {"end": 0.5, "frame_interval": 0.01},
+    "materials": {"water": {"type": "water", "density": 1000, "bulk_modulus": 2e5}},
+    "bodies": [{"material": "water", "particles_per_cell": 4,
+                "shape": {"type": "box", "min": [0, 0], "max": [0.1, 0.2]}}]
+  })");
+}
+
+// Runs `f`, expects a SceneError and returns its message.
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no SceneError thrown";
+  return "";
+}
+
+TEST(SceneLoader, BadScenesAreRejectedWithExpectedMessage) {
+  std::ifstream in(kBadScenes / "expected.json");
+  ASSERT_TRUE(in) << "missing " << kBadScenes / "expected.json";
+  json expected = json::parse(in);
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(kBadScenes)) {
+    std::string file = entry.path().filename().string();
+    if (entry.path().extension() != ".json" || file == "expected.json") continue;
+    ++files;
+    ASSERT_TRUE(expected.contains(file)) << file << " has no entry in expected.json";
+    std::string msg = error_of([&] { load_scene(entry.path().string()); });
+    EXPECT_NE(msg.find(expected[file].get<std::string>()), std::string::npos)
+        << file << ": message \"" << msg << "\" lacks \"" << expected[file].get<std::string>() << "\"";
+    EXPECT_NE(msg.find(file), std::string::npos) << file << ": message \"" << msg << "\" lacks the file name";
+  }
+  EXPECT_EQ(files, static_cast<int>(expected.size()));
+  EXPECT_GE(files, 15);
+}
+
+TEST(SceneLoader, MissingFileIsAnError) {
+  std::string msg = error_of([] { load_scene("/nonexistent/scene.json"); });
+  EXPECT_NE(msg.find("/nonexistent/scene.json"), std::string::npos);
+}
+
+TEST(SceneLoader, DefaultsAreFilled) {
+  Scene s = scene_from_json(minimal_scene(), "scenes/my_pool.json");
+  EXPECT_EQ(s.path, "scenes/my_pool.json");
+  EXPECT_EQ(s.name, "my_pool");
+  EXPECT_EQ(s.dim, 2);
+  EXPECT_EQ(s.gravity, (std::vector<double>{0, -9.81}));
+  EXPECT_DOUBLE_EQ(s.time.cfl, 0.4);
+  EXPECT_DOUBLE_EQ(s.time.wave_cfl, 0.4);
+  EXPECT_DOUBLE_EQ(s.time.max_dt, 0);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.materials[0].gamma, 7);
+  EXPECT_DOUBLE_EQ(s.materials[0].viscosity, 0);
+  ASSERT_EQ(s.bodies.size(), 1u);
+  EXPECT_EQ(s.bodies[0].material_index, 0);
+  EXPECT_EQ(s.bodies[0].velocity, (std::vector<double>{0, 0}));
+  EXPECT_TRUE(s.bodies[0].hydrostatic);
+  EXPECT_FALSE(s.bodies[0].surface_level.has_value());
+  EXPECT_TRUE(s.boundaries.empty());
+  EXPECT_TRUE(s.probes.empty());
+  EXPECT_TRUE(s.output.frames);
+  EXPECT_EQ(s.output.checkpoint_every, 0);
+  EXPECT_DOUBLE_EQ(s.output.probe_interval, 0.001);
+  EXPECT_EQ(s.json, minimal_scene());
+}
+
+TEST(SceneLoader, FullSceneRoundTrips) {
+  json j = minimal_scene();
+  j["name"] = "full";
+  j["time"].update(json{{"cfl", 0.3}, {"wave_cfl", 0.5}, {"max_dt", 1e-4}});
+  j["gravity"] = {1, -9};
+  j["materials"]["ice"] = {{"type", "water"}, {"density", 900}, {"bulk_modulus", 1e6}, {"gamma", 3}, {"viscosity", 0.1}};
+  j["bodies"].push_back(json::parse(R"({"material": "water", "particles_per_cell": 9, "velocity": [1, 2],
+      "hydrostatic": false, "surface_level": 0.25, "shape": {"type": "ball", "center": [0.3, 0.15], "radius": 0.1}})"));
+  j["bodies"].push_back(json::parse(R"({"material": "ice", "particles_per_cell": 1,
+      "shape": {"type": "polygon", "vertices": [[0.2, 0], [0.4, 0], [0.3, 0.1]]}})"));
+  j["boundaries"] = json::parse(R"([
+    {"type": "walls", "condition": "slip", "friction": 0.0, "faces": ["x-", "x+", "y-"]},
+    {"type": "half_plane", "point": [0, 0.01], "normal": [0, 2], "condition": "sticky"},
+    {"type": "box", "min": [0.5, 0], "max": [0.6, 0.05], "friction": 0.3},
+    {"type": "bathymetry", "points": [[0, 0.0], [0.6, 0.1]], "condition": "slip"}])");
+  j["probes"] = json::parse(R"({"interval": 0.002, "list": [
+    {"name": "p_bottom", "type": "pressure", "position": [0.25, 0.0]},
+    {"name": "ke", "type": "kinetic_energy", "material": "ice"},
+    {"name": "front", "type": "front", "material": "water", "axis": 1, "direction": -1},
+    {"name": "g1", "type": "wave_gauge", "position": [0.4], "still_level": 0.1},
+    {"name": "m", "type": "mass"}]})");
+  j["output"] = {{"frames", false}, {"checkpoint_every", 10}};
+
+  Scene s = scene_from_json(j, "x.json");
+  EXPECT_EQ(s.name, "full");
+  EXPECT_DOUBLE_EQ(s.time.cfl, 0.3);
+  EXPECT_DOUBLE_EQ(s.time.wave_cfl, 0.5);
+  EXPECT_DOUBLE_EQ(s.time.max_dt, 1e-4);
+  EXPECT_EQ(s.gravity, (std::vector<double>{1, -9}));
+  ASSERT_EQ(s.materials.size(), 2u);
+  int ice = s.material_index("ice"), water = s.material_index("water");
+  EXPECT_DOUBLE_EQ(s.materials[ice].density, 900);
+  EXPECT_DOUBLE_EQ(s.materials[ice].bulk_modulus, 1e6);
+  EXPECT_DOUBLE_EQ(s.materials[ice].gamma, 3);
+  EXPECT_DOUBLE_EQ(s.materials[ice].viscosity, 0.1);
+
+  ASSERT_EQ(s.bodies.size(), 3u);
+  const BodySpec& ball = s.bodies[1];
+  EXPECT_EQ(ball.material_index, water);
+  EXPECT_EQ(ball.particles_per_cell, 9);
+  EXPECT_EQ(ball.shape.type, "ball");
+  EXPECT_EQ(ball.shape.center, (std::vector<double>{0.3, 0.15}));
+  EXPECT_DOUBLE_EQ(ball.shape.radius, 0.1);
+  EXPECT_EQ(ball.velocity, (std::vector<double>{1, 2}));
+  EXPECT_FALSE(ball.hydrostatic);
+  EXPECT_DOUBLE_EQ(ball.surface_level.value(), 0.25);
+  EXPECT_EQ(s.bodies[2].material, "ice");
+  EXPECT_EQ(s.bodies[2].material_index, ice);
+  ASSERT_EQ(s.bodies[2].shape.vertices.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.bodies[2].shape.vertices[2][1], 0.1);
+
+  ASSERT_EQ(s.boundaries.size(), 4u);
+  EXPECT_EQ(s.boundaries[0].condition, BoundaryCondition::Slip);
+  EXPECT_EQ(s.boundaries[0].faces, (std::vector<std::string>{"x-", "x+", "y-"}));
+  EXPECT_EQ(s.boundaries[1].condition, BoundaryCondition::Sticky);
+  EXPECT_EQ(s.boundaries[1].normal, (std::vector<double>{0, 1}));  // normalized
+  EXPECT_EQ(s.boundaries[2].condition, BoundaryCondition::Separate);
+  EXPECT_DOUBLE_EQ(s.boundaries[2].friction, 0.3);
+  EXPECT_EQ(s.boundaries[2].max, (std::vector<double>{0.6, 0.05}));
+  ASSERT_EQ(s.boundaries[3].points.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.boundaries[3].points[1][1], 0.1);
+
+  ASSERT_EQ(s.probes.size(), 5u);
+  EXPECT_DOUBLE_EQ(s.output.probe_interval, 0.002);
+  EXPECT_EQ(s.probes[0].position, (std::vector<double>{0.25, 0.0}));
+  EXPECT_EQ(s.probes[0].material_index, -1);
+  EXPECT_EQ(s.probes[1].material_index, ice);
+  EXPECT_EQ(s.probes[2].axis, 1);
+  EXPECT_EQ(s.probes[2].direction, -1);
+  EXPECT_EQ(s.probes[2].material_index, water);
+  EXPECT_EQ(s.probes[3].position, (std::vector<double>{0.4}));
+  EXPECT_DOUBLE_EQ(s.probes[3].still_level.value(), 0.1);
+  EXPECT_EQ(s.probes[4].type, "mass");
+  EXPECT_FALSE(s.output.frames);
+  EXPECT_EQ(s.output.checkpoint_every, 10);
+  EXPECT_EQ(s.json, j);
+}
+
+TEST(SceneLoader, ThreeDimensionalScene) {
+  json j = json::parse(R"({
+    "dim": 3,
+    "domain": {"size": [1, 1, 1], "dx": 0.05},
+    "time": {"end": 1, "frame_interval": 0.1},
+    "materials": {"water": {"type": "water", "density": 1000, "bulk_modulus": 2e5}},
+    "bodies": [{"material": "water", "particles_per_cell": 8,
+                "shape": {"type": "box", "min": [0, 0, 0], "max": [0.5, 1, 0.5]}}],
+    "boundaries": [{"type": "walls"},
+                   {"type": "bathymetry", "origin": [0, 0], "spacing": [0.5, 1],
+                    "heights": [[0, 0.1, 0.2], [0, 0.1, 0.3]]}],
+    "probes": {"list": [{"name": "g", "type": "wave_gauge", "position": [0.7, 0.5]}]}
+  })");
+  Scene s = scene_from_json(j, "s3.json");
+  EXPECT_EQ(s.gravity, (std::vector<double>{0, 0, -9.81}));
+  EXPECT_EQ(s.boundaries[0].faces.size(), 6u);
+  EXPECT_EQ(s.boundaries[1].heights, (std::vector<std::vector<double>>{{0, 0.1, 0.2}, {0, 0.1, 0.3}}));
+  EXPECT_EQ(s.probes[0].position, (std::vector<double>{0.7, 0.5}));
+
+  j["bodies"][0]["particles_per_cell"] = 4;  // 4 is not a cube
+  EXPECT_NE(error_of([&] { scene_from_json(j, "s3.json"); }).find("bodies[0].particles_per_cell"), std::string::npos);
+  j["bodies"][0]["particles_per_cell"] = 8;
+  j["boundaries"][1]["heights"][1] = {0, 0.1};  // ragged
+  EXPECT_NE(error_of([&] { scene_from_json(j, "s3.json"); }).find("boundaries[1].heights[1]"), std::string::npos);
+  j["boundaries"][1]["heights"][1] = {0, 0.1, 0.3};
+  j["bodies"][0]["shape"] = {{"type", "polygon"}, {"vertices", {{0, 0}, {1, 0}, {0, 1}}}};  // 2D only
+  EXPECT_NE(error_of([&] { scene_from_json(j, "s3.json"); }).find("bodies[0].shape.type"), std::string::npos);
+}
+
+TEST(SceneLoader, OverridesApplyBeforeValidation) {
+  Scene s = scene_from_json(minimal_scene(), "x.json",
+                            {"domain.dx=0.005", "bodies.0.particles_per_cell=16", "bodies.0.shape.max.1=0.25",
+                             "name=renamed", "bodies.0.hydrostatic=false", "time.max_dt=0.001",
+                             "materials.water.viscosity=1e-3", "gravity=[0,-1]"});
+  EXPECT_DOUBLE_EQ(s.domain.dx, 0.005);
+  EXPECT_EQ(s.bodies[0].particles_per_cell, 16);
+  EXPECT_DOUBLE_EQ(s.bodies[0].shape.max[1], 0.25);
+  EXPECT_EQ(s.name, "renamed");
+  EXPECT_FALSE(s.bodies[0].hydrostatic);
+  EXPECT_DOUBLE_EQ(s.time.max_dt, 0.001);
+  EXPECT_DOUBLE_EQ(s.materials[0].viscosity, 1e-3);
+  EXPECT_EQ(s.gravity, (std::vector<double>{0, -1}));
+  EXPECT_EQ(s.json["time"]["max_dt"], 0.001);
+  // A quoted JSON string works too.
+  EXPECT_EQ(scene_from_json(minimal_scene(), "x.json", {R"(name="quoted")"}).name, "quoted");
+}
+
+TEST(SceneLoader, BadOverridesAreRejected) {
+  auto msg = [](const std::string& o) { return error_of([&] { scene_from_json(minimal_scene(), "x.json", {o}); }); };
+  // Unknown key: the override is applied, then validation names the key.
+  EXPECT_NE(msg("time.max_dtt=0.1").find("x.json: time.max_dtt: unknown key"), std::string::npos);
+  // An override can make a value invalid.
+  EXPECT_NE(msg("bodies.0.particles_per_cell=5").find("bodies[0].particles_per_cell"), std::string::npos);
+  EXPECT_NE(msg("domain.dx=abc").find("domain.dx: expected a number"), std::string::npos);
+  // Malformed or dangling overrides name the override and the file.
+  for (const std::string o : {"domain.dx", "=1", "domain..dx=1", "domain.dx.=1", "nothere.x=1", "bodies.1.material=w",
+                              "bodies.x.material=w", "domain.dx.sub=1"}) {
+    std::string m = msg(o);
+    EXPECT_NE(m.find("x.json"), std::string::npos) << m;
+    EXPECT_NE(m.find(o), std::string::npos) << m;
+  }
+  EXPECT_NE(msg("bodies.1.material=w").find("bodies.1 does not exist"), std::string::npos);
+}
+
+TEST(SceneLoader, LoadSceneReadsFileAndAppliesOverrides) {
+  fs::path path = fs::temp_directory_path() / "cdmpm_scene_loader_test.json";
+  std::ofstream(path) << minimal_scene().dump(2);
+  Scene s = load_scene(path.string(), {"time.end=2"});
+  EXPECT_EQ(s.name, "cdmpm_scene_loader_test");
+  EXPECT_DOUBLE_EQ(s.time.end, 2);
+  EXPECT_EQ(s.path, path.string());
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace cdmpm
