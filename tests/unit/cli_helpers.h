@@ -1,0 +1,89 @@
+// cli_helpers.h - helpers for end-to-end tests: run the cdmpm program, read probes.csv and summary.json.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cdmpm::testing {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+inline std::string source_path(const std::string& rel) { return std::string(CDMPM_SOURCE_DIR) + "/" + rel; }
+
+// A fresh, empty temporary directory, removed when the object dies.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::random_device rd;
+    path = fs::temp_directory_path() / ("cdmpm_test_" + std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(path);
+  }
+  ~TempDir() { std::error_code ec; fs::remove_all(path, ec); }
+  std::string operator/(const std::string& s) const { return (path / s).string(); }
+};
+
+inline std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+inline CliResult run_cdmpm(const std::vector<std::string>& args) {
+  TempDir log;
+  std::string cmd = quote(CDMPM_BINARY);
+  for (const auto& a : args) cmd += " " + quote(a);
+  cmd += " > " + quote(log / "out.txt") + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(log / "out.txt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.output = ss.str();
+  return r;
+}
+
+// probes.csv as column name -> values.
+inline std::map<std::string, std::vector<double>> read_probes(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
+  std::map<std::string, std::vector<double>> cols;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string c;
+    for (size_t i = 0; std::getline(ls, c, ','); ++i) cols[names.at(i)].push_back(std::stod(c));
+  }
+  return cols;
+}
+
+inline nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace cdmpm::testing

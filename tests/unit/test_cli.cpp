@@ -1,0 +1,114 @@
+// test_cli.cpp - the cdmpm program end to end: bad input is refused with a message naming the key and
+// nothing written; an unstable run stops with status "unstable" and keeps its frames; a resumed run and
+// runs on 1 and 2 threads give bitwise identical particle states; --help, --version and check work.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "cli_helpers.h"
+#include "io/checkpoint.h"
+
+namespace cdmpm::testing {
+namespace {
+
+TEST(Cli, VersionHelpAndCheck) {
+  auto r = run_cdmpm({"--version"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("cdmpm"), std::string::npos);
+  r = run_cdmpm({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("run"), std::string::npos);
+  for (const char* s : {"hydrostatic_2d", "dam_break_2d", "dam_break_3d"}) {
+    r = run_cdmpm({"check", source_path(std::string("scenes/") + s + ".json")});
+    EXPECT_EQ(r.exit_code, 0) << s << ": " << r.output;
+  }
+  r = run_cdmpm({"run"});
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+TEST(Cli, BadScenesExitNonZeroNameTheKeyAndWriteNothing) {
+  const auto expected = read_json(source_path("tests/bad_scenes/expected.json"));
+  ASSERT_GE(expected.size(), 15u);
+  for (const auto& [file, substring] : expected.items()) {
+    TempDir dir;
+    const auto r = run_cdmpm({"run", source_path("tests/bad_scenes/" + file), "--out", dir / "out"});
+    EXPECT_EQ(r.exit_code, 2) << file << ": " << r.output;
+    EXPECT_NE(r.output.find(substring.get<std::string>()), std::string::npos) << file << ": " << r.output;
+    EXPECT_NE(r.output.find(file), std::string::npos) << file << " not named in: " << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out")) << file << ": output directory was created";
+  }
+  // A bad --set override is bad input too.
+  TempDir dir;
+  const auto r = run_cdmpm({"run", source_path("scenes/hydrostatic_2d.json"), "--out", dir / "out", "--set", "domain.dx=-1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("domain.dx"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(Cli, UnstableRunStopsWithReasonAndKeepsFrames) {
+  TempDir dir;
+  // Water launched at 1e5 m/s: the CFL time step collapses far below the acoustic one.
+  const auto r = run_cdmpm({"run", source_path("scenes/hydrostatic_2d.json"), "--out", dir / "out", "--quiet", "--set",
+                            "bodies.0.velocity=[1e5,0]"});
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
+  const auto s = read_json(dir / "out/summary.json");
+  EXPECT_EQ(s["status"], "unstable");
+  EXPECT_FALSE(s["reason"].get<std::string>().empty());
+  EXPECT_NE(s["reason"].get<std::string>().find("time step collapsed"), std::string::npos) << s["reason"];
+  EXPECT_NE(s["reason"].get<std::string>().find("t = "), std::string::npos) << s["reason"];
+  // Frame 0 is intact (complete XML).
+  const std::string f0 = read_bytes(dir / "out/particles_0000.vtu");
+  EXPECT_NE(f0.find("</VTKFile>"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "out/particles.pvd"));
+}
+
+template <int dim>
+void expect_same_particles(const std::string& a, const std::string& b) {
+  Particles<dim> pa, pb;
+  read_checkpoint(a, pa);
+  read_checkpoint(b, pb);
+  ASSERT_EQ(pa.size(), pb.size());
+  auto same = [](const auto& x, const auto& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+  };
+  EXPECT_TRUE(same(pa.x, pb.x));
+  EXPECT_TRUE(same(pa.v, pb.v));
+  EXPECT_TRUE(same(pa.C, pb.C));
+  EXPECT_TRUE(same(pa.J, pb.J));
+  EXPECT_TRUE(same(pa.material, pb.material));
+}
+
+TEST(Cli, ResumeGivesBitwiseIdenticalState) {
+  TempDir dir;
+  const std::string scene = source_path("scenes/dam_break_2d.json");
+  const std::vector<std::string> common = {"--quiet", "--set", "domain.dx=0.0035719", "--set", "time.frame_interval=0.01"};
+  auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
+  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--set", "time.end=0.08"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--out", dir / "half", "--set", "time.end=0.04"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--resume", dir / "half", "--set", "time.end=0.08"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "half/checkpoint.bin");
+  EXPECT_EQ(read_bytes(dir / "full/probes.csv"), read_bytes(dir / "half/probes.csv"));
+  EXPECT_EQ(read_bytes(dir / "full/particles.pvd"), read_bytes(dir / "half/particles.pvd"));
+  EXPECT_EQ(read_json(dir / "half/summary.json")["steps"], read_json(dir / "full/summary.json")["steps"]);
+  // Resuming from a directory without a checkpoint is a clear error.
+  r = run_cdmpm(args({"run", scene, "--resume", dir / "nothing"}));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("checkpoint"), std::string::npos) << r.output;
+}
+
+TEST(Cli, OneAndTwoThreadsGiveBitwiseIdenticalState) {
+  TempDir dir;
+  for (const char* t : {"1", "2"}) {
+    const auto r = run_cdmpm({"run", source_path("scenes/dam_break_3d.json"), "--out", dir / t, "--threads", t, "--quiet",
+                              "--set", "domain.dx=0.0071438", "--set", "time.end=0.03", "--set", "output.frames=false"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  expect_same_particles<3>(dir / "1/checkpoint.bin", dir / "2/checkpoint.bin");
+}
+
+}  // namespace
+}  // namespace cdmpm::testing

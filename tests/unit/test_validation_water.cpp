@@ -1,0 +1,133 @@
+// test_validation_water.cpp - free-surface validation runs of the shipped scenes (coarse versions):
+//   hydrostatic column: bed pressure -> rho g h with first-order convergence, kinetic energy decays,
+//                       mass conserved to round-off;
+//   2D dam break: surge front against Martin & Moyce (1952) within 20 % at the coarse resolution;
+//   3D dam break: runs to its end with mass conserved and total energy never rising by more than 1 %.
+// The full-resolution dam-break comparison is tools/validate_dam_break.py.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numeric>
+
+#include "cli_helpers.h"
+
+namespace cdmpm::testing {
+namespace {
+
+constexpr double g = 9.81;
+
+// Mean of column `name` over rows with time >= t0.
+double settled_mean(const std::map<std::string, std::vector<double>>& c, const std::string& name, double t0) {
+  double s = 0;
+  int n = 0;
+  for (size_t i = 0; i < c.at("time").size(); ++i)
+    if (c.at("time")[i] >= t0) { s += c.at(name)[i]; ++n; }
+  return s / n;
+}
+
+struct HydrostaticRun {
+  double p_bottom, ke_max_late, mass_change;
+};
+
+HydrostaticRun run_hydrostatic(const TempDir& dir, const std::string& dx) {
+  const auto r = run_cdmpm({"run", source_path("scenes/hydrostatic_2d.json"), "--out", dir / dx, "--quiet", "--set",
+                            "domain.dx=" + dx, "--set", "output.frames=false"});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto c = read_probes(dir / (dx + "/probes.csv"));
+  const double m0 = c.at("mass").front();
+  double ke = 0;
+  for (size_t i = 0; i < c.at("time").size(); ++i)
+    if (c.at("time")[i] >= 2.0) ke = std::max(ke, c.at("ke")[i]);
+  return {settled_mean(c, "p_bottom", 2.0), ke, std::abs(c.at("mass").back() - m0) / m0};
+}
+
+TEST(Hydrostatic, BedPressureConvergesToRhoGH) {
+  TempDir dir;
+  const double rho = 1000, h = 1.0, expected = rho * g * h;
+  const auto coarse = run_hydrostatic(dir, "0.0625");   // shipped resolution, h/dx = 16
+  const auto fine = run_hydrostatic(dir, "0.03125");    // h/dx = 32
+  const double e1 = std::abs(coarse.p_bottom - expected) / expected, e2 = std::abs(fine.p_bottom - expected) / expected;
+  EXPECT_LT(e1, 0.05) << "p_bottom " << coarse.p_bottom;
+  EXPECT_LT(e2, 0.02) << "p_bottom " << fine.p_bottom;
+  // First order: halving dx should roughly halve the error (observed order > 0.7).
+  EXPECT_GT(std::log2(e1 / e2), 0.7) << "errors " << e1 << " and " << e2;
+  // Kinetic energy after settling under 1e-4 of m g h (total mass per unit depth: rho h width, width 0.5 m).
+  const double mgh = rho * h * 0.5 * g * h;
+  EXPECT_LT(coarse.ke_max_late, 1e-4 * mgh);
+  EXPECT_LT(fine.ke_max_late, 1e-4 * mgh);
+  // Particles carry constant mass: conserved to round-off.
+  EXPECT_LT(coarse.mass_change, 1e-12);
+  std::ofstream(dir / "report.txt") << e1 << " " << e2;
+  RecordProperty("p_bottom_error_h16", std::to_string(e1));
+  RecordProperty("p_bottom_error_h32", std::to_string(e2));
+}
+
+// Martin & Moyce (1952), n^2 = 2: front Z = x/a against T = t sqrt(2 g / a).
+std::vector<std::pair<double, double>> martin_moyce() {
+  std::ifstream in(source_path("../shared/data/dam_break_martin_moyce.csv"));
+  EXPECT_TRUE(in.good()) << "missing ../shared/data/dam_break_martin_moyce.csv";
+  std::vector<std::pair<double, double>> d;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
+    const auto comma = line.find(',');
+    d.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+  }
+  return d;
+}
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double xi) {
+  const auto it = std::upper_bound(x.begin(), x.end(), xi);
+  const size_t j = std::clamp<size_t>(it - x.begin(), 1, x.size() - 1);
+  const double f = (xi - x[j - 1]) / (x[j] - x[j - 1]);
+  return y[j - 1] + f * (y[j] - y[j - 1]);
+}
+
+TEST(DamBreak2D, SurgeFrontWithin20PercentOfMartinMoyceAtCoarseResolution) {
+  TempDir dir;
+  const double a = 0.05715;
+  const auto r = run_cdmpm({"run", source_path("scenes/dam_break_2d.json"), "--out", dir / "out", "--quiet", "--set",
+                            "domain.dx=" + std::to_string(a / 16), "--set", "output.frames=false"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = read_probes(dir / "out/probes.csv");
+  std::vector<double> T, Z;
+  for (size_t i = 0; i < c.at("time").size(); ++i) {
+    T.push_back(c.at("time")[i] * std::sqrt(2 * g / a));
+    Z.push_back(c.at("front")[i] / a);
+  }
+  int compared = 0;
+  for (const auto& [Te, Ze] : martin_moyce()) {
+    if (Te < 1 || Te > 3.5) continue;
+    const double Zs = interpolate(T, Z, Te);
+    EXPECT_NEAR(Zs, Ze, 0.20 * Ze) << "T = " << Te;
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
+}
+
+TEST(DamBreak3D, RunsToEndWithMassConservedAndEnergyNotIncreasing) {
+  TempDir dir;
+  const double a = 0.05715;
+  const auto r = run_cdmpm({"run", source_path("scenes/dam_break_3d.json"), "--out", dir / "out", "--quiet", "--set",
+                            "domain.dx=" + std::to_string(a / 8), "--set", "time.end=0.15", "--set", "output.frames=false"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto s = read_json(dir / "out/summary.json");
+  EXPECT_EQ(s["status"], "completed");
+  EXPECT_NEAR(s["sim_time"].get<double>(), 0.15, 1e-12);
+  EXPECT_LT(std::abs(s["mass_change"].get<double>()), 1e-12);
+  const auto c = read_probes(dir / "out/probes.csv");
+  // Total energy (datum: the floor) never rises by more than 1 % of its initial value above its running minimum.
+  const auto& e = c.at("energy");
+  double lowest = e.front();
+  for (size_t i = 0; i < e.size(); ++i) {
+    EXPECT_LE(e[i] - lowest, 0.01 * e.front()) << "t = " << c.at("time")[i];
+    lowest = std::min(lowest, e[i]);
+  }
+  // The water actually moved: the front advanced at least two column widths.
+  EXPECT_GT(c.at("front").back(), 3 * a);
+}
+
+}  // namespace
+}  // namespace cdmpm::testing

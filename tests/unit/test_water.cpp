@@ -1,0 +1,48 @@
+// test_water.cpp - Tait equation of state: pressure is minus the derivative of the stored energy,
+// the hydrostatic pre-compression inverts the pressure law, and the acoustic speed is sqrt(dp/drho).
+#include <gtest/gtest.h>
+
+#include "material/weakly_compressible_water.h"
+
+namespace cdmpm {
+namespace {
+
+TEST(WeaklyCompressibleWater, PressureIsMinusEnergyDerivative) {
+  const WeaklyCompressibleWater w{1000, 2e5, 7, 0};
+  for (double J : {0.97, 0.99, 1.0, 1.01, 1.05}) {
+    const double h = 1e-6;
+    const double fd = -(w.energy_density(Real(J + h)) - w.energy_density(Real(J - h))) / (2 * h);
+    EXPECT_NEAR(fd, w.pressure(Real(J)), 1e-6 * w.K) << "J = " << J;
+  }
+  EXPECT_EQ(w.pressure(1), 0);
+  EXPECT_EQ(w.energy_density(1), 0);
+}
+
+TEST(WeaklyCompressibleWater, PreCompressionInvertsPressure) {
+  const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
+  for (double p : {0.0, 1e3, 1e4, 5e4}) EXPECT_NEAR(w.pressure(w.volume_ratio_at_pressure(Real(p))), p, 1e-9 * w.K);
+}
+
+TEST(WeaklyCompressibleWater, WaveSpeedIsSqrtDpDrho) {
+  const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
+  for (double J : {0.98, 1.0, 1.02}) {
+    // rho = rho0 / J; dp/drho = dp/dJ * dJ/drho = p'(J) * (-J^2 / rho0)
+    const double h = 1e-7;
+    const double dpdJ = (w.pressure(Real(J + h)) - w.pressure(Real(J - h))) / (2 * h);
+    const double c2 = -dpdJ * J * J / w.rho0;
+    EXPECT_NEAR(w.wave_speed(Real(J)), std::sqrt(c2), 1e-5 * std::sqrt(c2));
+  }
+}
+
+TEST(WeaklyCompressibleWater, ViscousStressIsDeviatoricAndSymmetric) {
+  const WeaklyCompressibleWater w{1000, 1e6, 7, 1e-3};
+  Mat<2> C;
+  C << 0.3, 1.0, -0.2, 0.5;
+  const Mat<2> tau = w.kirchhoff<2>(1, C);
+  EXPECT_NEAR(tau.trace(), 0, 1e-15);  // J = 1: no pressure, viscous part traceless
+  EXPECT_NEAR(tau(0, 1), tau(1, 0), 1e-15);
+  EXPECT_NEAR(tau(0, 1), 2 * 1e-3 * 0.5 * (1.0 - 0.2), 1e-15);
+}
+
+}  // namespace
+}  // namespace cdmpm
