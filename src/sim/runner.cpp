@@ -3,6 +3,7 @@
 #include "sim/runner.h"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "io/checkpoint.h"
 #include "io/vtu_writer.h"
@@ -115,20 +117,22 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   const size_t n = sim.particles.size();
   auto last_progress = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
+  const bool tty = isatty(fileno(stderr));
   auto progress_line = [&](bool final) {
     const double wall = elapsed(), rate = (sim.steps - steps_begin) * double(n) / std::max(wall, 1e-9);
     const double left = (end - sim.time) / std::max(sim.time - t_begin, 1e-300) * wall;
     std::fprintf(stderr, "%sstep %lld  t = %.5g / %.5g s  dt = %.3e s  particles %zu  %.3g particle-steps/s  left %s%s",
-                 final ? "\r" : "\r", sim.steps, sim.time, end, static_cast<double>(sim.stable_dt()), n, rate,
-                 format_duration(left).c_str(), final ? "\n" : "   ");
+                 tty ? "\r" : "", sim.steps, sim.time, end, static_cast<double>(sim.stable_dt()), n, rate,
+                 format_duration(left).c_str(), final || !tty ? "\n" : "   ");
   };
 
   while (sim.time < end) {
     Real dt = sim.stable_dt();
     if (dt < Real(1e-3) * sim.wave_dt_at_start || !(dt > 0)) {
-      result = {"unstable", "time step collapsed to " + std::to_string(dt) + " s (max particle speed " +
-                                std::to_string(sim.max_speed) + " m/s) at t = " + std::to_string(sim.time) + " s, step " +
-                                std::to_string(sim.steps), 3};
+      std::ostringstream os;
+      os << "time step collapsed to " << dt << " s, below 1e-3 of the acoustic limit " << sim.wave_dt_at_start
+         << " s: max particle speed " << sim.max_speed << " m/s at t = " << sim.time << " s, step " << sim.steps;
+      result = {"unstable", os.str(), 3};
       break;
     }
     const double next_frame = std::min(end, (meta.frame_index + 1) * frame_dt);
