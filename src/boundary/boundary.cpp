@@ -28,17 +28,21 @@ class Walls final : public Boundary<dim> {
         on_[a][side] = s.faces.empty() || std::find(s.faces.begin(), s.faces.end(), face) != s.faces.end();
       }
   }
-  void fold_ghosts(Grid<dim>& g) const override {
-    if (this->condition_ == BoundaryCondition::Sticky) return;
-    for (int a = 0; a < dim; ++a) {
+  // Calls f(src, dst, axis) for every ghost node src beyond a slip face and its mirror node dst inside,
+  // axis by axis (forward or reverse). Faces that do not lie on a grid plane are skipped.
+  template <class F>
+  void for_each_mirror_pair(const Grid<dim>& g, bool reverse, F&& f) const {
+    if (this->condition_ != BoundaryCondition::Slip) return;
+    for (int step = 0; step < dim; ++step) {
+      const int a = reverse ? dim - 1 - step : step;
       size_t stride = 1, outer = 1;
       for (int b = a + 1; b < dim; ++b) stride *= g.n_nodes[b];
       for (int b = 0; b < a; ++b) outer *= g.n_nodes[b];
       const Real cells = size_[a] * g.inv_dx;
       const int top = static_cast<int>(std::lround(cells));
-      if (std::abs(cells - Real(top)) > Real(1e-6) * std::max(Real(1), cells)) continue;  // face not on a node
       for (int side = 0; side < 2; ++side) {
         if (!on_[a][side]) continue;
+        if (side == 1 && std::abs(cells - Real(top)) > Real(1e-6) * std::max(Real(1), cells)) continue;
         const int face = side ? top : 0, out = side ? 1 : -1;
         for (int k = 1; k <= Grid<dim>::ghost; ++k) {
           const int src = face + out * k + Grid<dim>::ghost, dst = face - out * k + Grid<dim>::ghost;
@@ -47,15 +51,33 @@ class Walls final : public Boundary<dim> {
           for (size_t o = 0; o < outer; ++o)
             for (size_t in = 0; in < stride; ++in) {
               const size_t base = o * g.n_nodes[a] * stride + in;
-              const size_t s = base + src * stride, d = base + dst * stride;
-              if (g.mass[s] <= 0) continue;
-              Vec<dim> mv = g.momentum[s];
-              mv[a] = -mv[a];
-              g.mass[d] += g.mass[s];
-              g.momentum[d] += mv;
+              f(base + src * stride, base + dst * stride, a);
             }
         }
       }
+    }
+  }
+  void fold_ghosts(Grid<dim>& g) const override {
+    for_each_mirror_pair(g, false, [&](size_t s, size_t d, int a) {
+      if (g.mass[s] <= 0) return;
+      Vec<dim> mv = g.momentum[s];
+      mv[a] = -mv[a];
+      g.mass[d] += g.mass[s];
+      g.momentum[d] += mv;
+    });
+  }
+  void unfold_ghosts(Grid<dim>& g) const override {
+    for_each_mirror_pair(g, true, [&](size_t s, size_t d, int a) {
+      Vec<dim> v = g.momentum[d];
+      v[a] = -v[a];
+      g.momentum[s] = v;
+      g.mass[s] = g.mass[d];
+    });
+  }
+  void keep_inside(Vec<dim>& x) const override {
+    for (int a = 0; a < dim; ++a) {
+      if (on_[a][0] && x[a] < 0) x[a] = 0;
+      if (on_[a][1] && x[a] > size_[a]) x[a] = size_[a];
     }
   }
   void apply(const Vec<dim>& x, Vec<dim>& v) const override {

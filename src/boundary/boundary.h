@@ -10,12 +10,16 @@
 // speed |v_t| is reduced by mu |v.n|, and set to zero if it is smaller than that.
 // The solid's normal for walls is the face normal; for obstacles it comes from the shape.
 //
-// Mirror folding at slip and separate domain walls that lie on a grid plane: after p2g, the mass and
-// momentum scattered to ghost nodes beyond the wall are added to their mirror nodes inside, with the
-// normal momentum reversed. This is the contribution of the mirror image of the material (a slip wall is a
-// symmetry plane). Without it, the nodes next to a wall miss the stress of the particle rows that would lie
+// Mirror symmetry at slip domain walls that lie on a grid plane (a slip wall is a symmetry plane): after
+// p2g, the mass and momentum scattered to ghost nodes beyond the wall are added to their mirror nodes
+// inside, with the normal momentum reversed (the contribution of the material's mirror image); after the
+// grid update, each ghost node takes its mirror node's velocity, reflected, so that g2p reads the same
+// symmetric field. Folding without unfolding makes the two transfers non-adjoint, and the scheme then
+// injects energy (a dam break blows up). Without it, the nodes next to a wall miss the stress of the particle rows that would lie
 // beyond it, and the particles next to the wall carry ~10 % more pressure than the hydrostatic value, an
-// error that does not shrink with dx.
+// error that does not shrink with dx. The mirror picture needs every particle on the material side of the
+// wall, so after advection a particle that crossed a domain wall is put back on the wall plane (the grid
+// velocity there already has no normal component; the crossing is an interpolation overshoot of O(dt v)).
 #pragma once
 
 #include <array>
@@ -54,6 +58,10 @@ class Boundary {
   virtual void apply(const Vec<dim>& x, Vec<dim>& v) const = 0;
   // Adds ghost-node mass and momentum to mirror nodes (domain walls only; see above).
   virtual void fold_ghosts(Grid<dim>&) const {}
+  // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).
+  virtual void unfold_ghosts(Grid<dim>&) const {}
+  // Keeps a particle position on the material side of the boundary (domain walls only; see above).
+  virtual void keep_inside(Vec<dim>&) const {}
 
  protected:
   BoundaryCondition condition_;

@@ -124,8 +124,15 @@ void Simulation<dim>::step(Real dt) {
   p2g(particles, materials, bins_, grid, dt);
   for (const auto& b : boundaries) b->fold_ghosts(grid);
   grid_update(grid, gravity, dt, boundaries);
+  for (const auto& b : boundaries) b->unfold_ghosts(grid);
   g2p(particles, grid);
   constitutive_update(particles, materials, dt);
+  if (!boundaries.empty()) {
+    const size_t n = particles.size();
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < n; ++q)
+      for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
+  }
   update_speeds();
   time += dt;
   ++steps;

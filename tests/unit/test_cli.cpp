@@ -82,7 +82,8 @@ void expect_same_particles(const std::string& a, const std::string& b) {
 TEST(Cli, ResumeGivesBitwiseIdenticalState) {
   TempDir dir;
   const std::string scene = source_path("scenes/dam_break_2d.json");
-  const std::vector<std::string> common = {"--quiet", "--set", "domain.dx=0.0035719", "--set", "time.frame_interval=0.01"};
+  const std::vector<std::string> common = {"--quiet", "--set", "domain.dx=0.003571875", "--set",
+                                           "time.frame_interval=0.01"};
   auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
   auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--set", "time.end=0.08"}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -104,7 +105,7 @@ TEST(Cli, OneAndTwoThreadsGiveBitwiseIdenticalState) {
   TempDir dir;
   for (const char* t : {"1", "2"}) {
     const auto r = run_cdmpm({"run", source_path("scenes/dam_break_3d.json"), "--out", dir / t, "--threads", t, "--quiet",
-                              "--set", "domain.dx=0.0071438", "--set", "time.end=0.03", "--set", "output.frames=false"});
+                              "--set", "domain.dx=0.00714375", "--set", "time.end=0.03", "--set", "output.frames=false"});
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   expect_same_particles<3>(dir / "1/checkpoint.bin", dir / "2/checkpoint.bin");

@@ -89,7 +89,7 @@ TEST(DamBreak2D, SurgeFrontWithin20PercentOfMartinMoyceAtCoarseResolution) {
   TempDir dir;
   const double a = 0.05715;
   const auto r = run_cdmpm({"run", source_path("scenes/dam_break_2d.json"), "--out", dir / "out", "--quiet", "--set",
-                            "domain.dx=" + std::to_string(a / 16), "--set", "output.frames=false"});
+                            "domain.dx=0.003571875", "--set", "output.frames=false"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto c = read_probes(dir / "out/probes.csv");
   std::vector<double> T, Z;
@@ -111,7 +111,7 @@ TEST(DamBreak3D, RunsToEndWithMassConservedAndEnergyNotIncreasing) {
   TempDir dir;
   const double a = 0.05715;
   const auto r = run_cdmpm({"run", source_path("scenes/dam_break_3d.json"), "--out", dir / "out", "--quiet", "--set",
-                            "domain.dx=" + std::to_string(a / 8), "--set", "time.end=0.15", "--set", "output.frames=false"});
+                            "domain.dx=0.00714375", "--set", "time.end=0.15", "--set", "output.frames=false"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto s = read_json(dir / "out/summary.json");
   EXPECT_EQ(s["status"], "completed");

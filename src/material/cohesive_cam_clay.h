@@ -1,0 +1,197 @@
+// cohesive_cam_clay.h - cohesive non-associative Cam-Clay plasticity with softening/hardening, the plastic
+// part of the ice model (Wolper et al. 2019, CD-MPM, ACM TOG 38(4), sec. 4; Wolper et al. 2021 for ice).
+// The elastic part is material/neo_hookean_split.h; F below is always the ELASTIC deformation gradient.
+//
+// Stress invariants of the Kirchhoff stress tau (d = dim):
+//   p = -tr(tau)/d                       pressure, POSITIVE IN COMPRESSION,
+//   q = sqrt(3/2) |dev(tau)|             von Mises stress (Frobenius norm of the deviator).
+//   In 2D the same sqrt(3/2) factor is applied to the in-plane 2x2 deviator (a convention: it is not the
+//   plane-strain Mises stress, which would need tau_zz; it only rescales M in 2D).
+// Yield function (ellipse in the p-q plane through p = -beta p0 and p = p0, centre p_c = (1 - beta) p0 / 2):
+//   y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0.
+//   p0 is the compressive strength (hydrostatic), beta p0 the hydrostatic tensile strength (cohesion).
+//
+// Return mapping (non-associative, CD-MPM), from the trial elastic F = U diag(s) V^T:
+//   * y <= 0: elastic, F untouched (bitwise).
+//   * p > p0: project to the compressive tip (p0, 0): s_i = J^(1/d), kappa/2 (J^2 - 1) = -p0
+//             => J = sqrt(1 - 2 p0 / kappa) (closed form; tau = J sigma is the Kirchhoff stress).
+//   * p < -beta p0: project to the tensile tip (-beta p0, 0): J = sqrt(1 + 2 beta p0 / kappa).
+//   * otherwise: keep p (i.e. keep J; the Kirchhoff pressure depends on J only) and scale the deviatoric
+//             stress by c = q_target / q_trial, q_target = sqrt(M^2 (p0 - p)(p + beta p0) / (1 + 2 beta)).
+//             With bhat_i = J^(-2/d) s_i^2 (prod bhat_i = 1) the deviatoric stress is mu dev(bhat). The new
+//             bhat'_i = m + c dev(bhat)_i has deviator exactly c dev(bhat); m is the unique root of
+//             prod_i (m + c dev(bhat)_i) = 1 (unimodular, so J is unchanged). f(m) = prod(...) - 1 is
+//             increasing and convex right of its largest pole, and f(mean(bhat)) >= 0 (log-concavity and
+//             AM-GM), so Newton from m = mean(bhat) decreases monotonically to the root. s'_i = J^(1/d) sqrt(bhat'_i).
+//   F <- U diag(s') V^T.
+//
+// Hardening/softening (if `hardening`), CD-MPM rule. alpha is the log of the plastic volume change,
+// alpha = ln J^P, incremented by the volumetric part of the projection:
+//   * tips:       alpha += ln(J_trial / J_new);
+//   * q-branch:   J is kept, so CD-MPM uses an auxiliary point: the intersection (p_x, q_x) of the yield
+//                 surface with the ray from the ellipse centre (p_c, 0) to the trial (p, q); then
+//                 alpha += ln(J_trial / J(p_x)), J(p_x) = sqrt(1 - 2 p_x / kappa).
+//   p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))), eps = p0_floor = 1e-4.
+// SIGN CONVENTION: tension beyond the surface (p < p_c) gives J_new < J_trial, so alpha INCREASES, -alpha
+// shrinks and p0 DECREASES toward kappa eps: TENSION SOFTENS (damages) the ice, beta p0 -> beta kappa eps.
+// Compression beyond the surface (p > p_c) gives alpha DECREASES, p0 INCREASES: compression hardens.
+// Initialise alpha with alpha_of_p0(p0_initial, kappa) (< 0) for a given initial strength p0_initial.
+// damage = 1 - p0 / p0_initial, clamped to [0, 1].
+//
+// Robustness: singular values are clamped to at least min_singular_value = 1e-6 (after making U, V proper
+// rotations, which moves the sign of an inverted F onto the last singular value). A degenerate or inverted F
+// is therefore mapped to a nearby non-inverted F with J >= 1e-6^d and never yields NaN; such an F is always
+// rewritten (the function then returns true even if the clamped state is elastic).
+// All tolerances are relative (dimensionless stretches, or stresses relative to kappa/p0), so the same code
+// works for E = 1e4 Pa and E = 9e9 Pa.
+#pragma once
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+
+#include "core/types.h"
+#include "material/neo_hookean_split.h"
+
+namespace cdmpm {
+
+struct CohesiveCamClay {
+  Real M = Real(1.85), beta = Real(0.3), xi = Real(3);
+  bool hardening = true;
+
+  static constexpr Real p0_floor = Real(1e-4);            // eps in p0(alpha): residual strength / kappa
+  static constexpr Real min_singular_value = Real(1e-6);  // clamp for degenerate / inverted F
+
+  Real p0_of_alpha(Real alpha, Real kappa) const {
+    return kappa * (p0_floor + std::sinh(xi * std::max(-alpha, Real(0))));
+  }
+  // Inverse of p0_of_alpha on alpha <= 0 (for initialisation); p0 <= kappa eps gives alpha = 0.
+  Real alpha_of_p0(Real p0, Real kappa) const {
+    return -std::asinh(std::max(p0 / kappa - p0_floor, Real(0))) / xi;
+  }
+  static Real damage(Real p0, Real p0_initial) {
+    return std::clamp(Real(1) - p0 / p0_initial, Real(0), Real(1));
+  }
+
+  Real yield(Real p, Real q, Real p0) const {
+    return (Real(1) + Real(2) * beta) * q * q + M * M * (p + beta * p0) * (p - p0);
+  }
+
+  // Invariants of a Kirchhoff stress given as principal values or as a full matrix.
+  template <int dim>
+  static Real pressure(const Vec<dim>& tau) { return -tau.sum() / Real(dim); }
+  template <int dim>
+  static Real mises(const Vec<dim>& tau) {
+    return std::sqrt(Real(1.5)) * (tau.array() - tau.sum() / Real(dim)).matrix().norm();
+  }
+  template <int dim>
+  static Real pressure(const Mat<dim>& tau) { return -tau.trace() / Real(dim); }
+  template <int dim>
+  static Real mises(const Mat<dim>& tau) {
+    return std::sqrt(Real(1.5)) * (tau - (tau.trace() / Real(dim)) * Mat<dim>::Identity()).norm();
+  }
+
+  // Uniaxial strength magnitude sigma > 0 predicted by the yield surface for tau = diag(+-sigma, 0, ...):
+  // p = -+sigma/d, q = sqrt(3/2) sqrt((d-1)/d) sigma (= sigma in 3D, sqrt(3)/2 sigma in 2D).
+  // y = 0 is a quadratic A s^2 + B s + C = 0 with C = -M^2 beta p0^2 <= 0: exactly one root s >= 0.
+  // Tension is weaker than compression iff beta < 1.
+  template <int dim>
+  Real uniaxial_strength(Real p0, bool tension) const {
+    const Real t = (tension ? Real(-1) : Real(1)) / Real(dim);  // p = t sigma
+    const Real cq2 = Real(1.5) * Real(dim - 1) / Real(dim);     // q^2 = cq2 sigma^2
+    const Real A = (Real(1) + Real(2) * beta) * cq2 + M * M * t * t;
+    const Real B = M * M * t * (beta - Real(1)) * p0;
+    const Real C = -M * M * beta * p0 * p0;
+    const Real disc = std::sqrt(B * B - Real(4) * A * C);
+    // Cancellation-free form of the non-negative root.
+    return B > 0 ? (Real(-2) * C) / (B + disc) : (-B + disc) / (Real(2) * A);
+  }
+
+  // Plastic projection of the elastic deformation gradient F (in place). p0 is the current compressive
+  // strength (normally p0_of_alpha(alpha, e.kappa)); alpha is updated if `hardening`.
+  // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
+  template <int dim>
+  bool return_mapping(Mat<dim>& F, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
+    Eigen::JacobiSVD<Mat<dim>> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Mat<dim> U = svd.matrixU(), V = svd.matrixV();
+    Vec<dim> s = svd.singularValues();
+    if (U.determinant() < 0) {
+      U.col(dim - 1) *= Real(-1);
+      s(dim - 1) *= Real(-1);
+    }
+    if (V.determinant() < 0) {
+      V.col(dim - 1) *= Real(-1);
+      s(dim - 1) *= Real(-1);
+    }
+    bool clamped = false;
+    for (int i = 0; i < dim; ++i)
+      if (!(s(i) >= min_singular_value)) {  // also catches a negative (inverted) last value
+        s(i) = min_singular_value;
+        clamped = true;
+      }
+
+    const Real J = s.prod();
+    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    Vec<dim> bhat = (Jm2d * s.array().square()).matrix();  // unimodular stretch, prod = 1
+    const Real bmean = bhat.sum() / Real(dim);
+    const Vec<dim> bdev = (bhat.array() - bmean).matrix();
+    const Real p = e.pressure_of_J(J);
+    const Real q = std::sqrt(Real(1.5)) * e.mu * bdev.norm();
+    const Real y = yield(p, q, p0);
+
+    auto rebuild = [&](const Vec<dim>& snew) { F = U * snew.asDiagonal() * V.transpose(); };
+
+    if (y <= 0) {
+      if (clamped) rebuild(s);
+      return clamped;
+    }
+
+    if (p > p0 || p < -beta * p0) {  // tips: hydrostatic state at the tip pressure
+      const Real p_tip = p > p0 ? p0 : -beta * p0;
+      // kappa/2 (J^2 - 1) = -p_tip. p_tip = p0 >= kappa/2 is unreachable (p < kappa/2); guard anyway.
+      const Real J2 = std::max(Real(1) - Real(2) * p_tip / e.kappa, std::pow(min_singular_value, Real(2 * dim)));
+      const Real J_new = std::sqrt(J2);
+      if (hardening) alpha += std::log(J / J_new);
+      rebuild(Vec<dim>::Constant(std::pow(J_new, Real(1) / Real(dim))));
+      return true;
+    }
+
+    // q-branch: here -beta p0 <= p <= p0 and y > 0 imply q > 0.
+    const Real q_target =
+        std::sqrt(std::max(M * M * (p0 - p) * (p + beta * p0) / (Real(1) + Real(2) * beta), Real(0)));
+    const Real c = q_target / q;
+    if (hardening) {
+      // CD-MPM: volumetric change to the surface point on the ray from the centre (p_c, 0) to (p, q).
+      // On the ray (p_c + t dp, t q): y = t^2 ((1 + 2 beta) q^2 + M^2 dp^2) - M^2 a^2, a = (1 + beta) p0 / 2.
+      const Real p_c = (Real(1) - beta) * p0 / Real(2);
+      const Real a = (Real(1) + beta) * p0 / Real(2);
+      const Real dp = p - p_c;
+      const Real t = M * a / std::sqrt((Real(1) + Real(2) * beta) * q * q + M * M * dp * dp);
+      const Real p_x = p_c + t * dp;
+      const Real J2x = Real(1) - Real(2) * p_x / e.kappa;
+      if (J2x > 0) alpha += std::log(J / std::sqrt(J2x));
+    }
+    const Vec<dim> cd = c * bdev;
+    // Newton on f(m) = prod(m + cd_i) - 1 from m = bmean (f >= 0 there): monotone decrease to the root.
+    Real m = bmean;
+    for (int it = 0; it < 100; ++it) {
+      Real f = 1, df = 0;
+      for (int i = 0; i < dim; ++i) {
+        df = df * (m + cd(i)) + f;  // product rule accumulated
+        f *= (m + cd(i));
+      }
+      f -= Real(1);
+      if (!(f > 0) || !(df > 0)) break;
+      const Real m_new = m - f / df;
+      if (!(m_new < m)) break;  // converged to machine precision
+      m = m_new;
+    }
+    const Real Jd = std::pow(J, Real(1) / Real(dim));
+    Vec<dim> s_new;
+    for (int i = 0; i < dim; ++i) s_new(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
+    rebuild(s_new);
+    return true;
+  }
+};
+
+}  // namespace cdmpm

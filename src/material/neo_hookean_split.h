@@ -1,0 +1,96 @@
+// neo_hookean_split.h - compressible Neo-Hookean elasticity with a volumetric/deviatoric split, the elastic
+// part of the ice model (Wolper et al. 2019, CD-MPM, ACM TOG 38(4), eq. for psi; Wolper et al. 2021).
+//
+// Stored energy per reference volume, with J = det F, b = F F^T, d = dim:
+//   psi(F) = mu/2 (tr(J^(-2/d) b) - d) + kappa/2 ((J^2 - 1)/2 - ln J).
+// Derivation of the Kirchhoff stress tau = P F^T, P = dpsi/dF:
+//   d tr(J^(-2/d) F F^T)/dF = J^(-2/d) (2 F - (2/d) tr(b) F^-T)        (using dJ/dF = J F^-T)
+//     => deviatoric part  tau_dev = mu J^(-2/d) (b - tr(b)/d I) = mu J^(-2/d) dev(b),
+//   d/dJ [(J^2 - 1)/2 - ln J] = J - 1/J, times dJ/dF F^T = J I
+//     => volumetric part  tau_vol = kappa/2 (J^2 - 1) I.
+//   tau = mu J^(-2/d) dev(b) + kappa/2 (J^2 - 1) I.
+// The Kirchhoff pressure p = -tr(tau)/d = -kappa/2 (J^2 - 1) (positive in compression) depends on J only;
+// it is bounded above by kappa/2 (reached as J -> 0).
+// In principal axes (F = U diag(s) V^T, b = U diag(s^2) U^T) tau = U diag(tau_i) U^T with
+//   tau_i = mu J^(-2/d) (s_i^2 - sum_k s_k^2 / d) + kappa/2 (J^2 - 1),  J = prod s_k.
+// Small-strain limit (F = I + grad u, eps = sym grad u): tau ~ 2 mu dev(eps) + kappa tr(eps) I.
+//
+// Elastic constants from (E, nu), see from_young_poisson:
+//   mu = E / (2 (1 + nu)) in both 2D and 3D;
+//   3D: kappa = E / (3 (1 - 2 nu)), the ordinary bulk modulus;
+//   2D: the simulation is PLANE STRAIN (eps_zz = 0). Plane-strain Hooke's law in the plane reads
+//       sigma = lambda tr(eps) I + 2 mu eps = 2 mu dev2(eps) + (lambda + mu) tr(eps) I  (dev2: 2D deviator),
+//       so the in-plane bulk modulus that the 2D model must use is kappa = lambda + mu
+//       = E / (2 (1 + nu)(1 - 2 nu)). With this choice the 2D model linearises exactly to plane-strain
+//       linear elasticity (tested in tests/unit/test_ice_constitutive.cpp).
+// Preconditions: J = det F > 0 (the energy contains ln J). The plastic return mapping
+// (material/cohesive_cam_clay.h) guarantees this for the stored elastic F.
+#pragma once
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "core/types.h"
+
+namespace cdmpm {
+
+struct NeoHookeanSplit {
+  Real mu = 0, kappa = 0;
+
+  // mu, kappa from Young's modulus and Poisson's ratio (2D: plane strain, kappa = lambda + mu; see above).
+  static NeoHookeanSplit from_young_poisson(Real E, Real nu, int dim) {
+    NeoHookeanSplit e;
+    e.mu = E / (Real(2) * (Real(1) + nu));
+    if (dim == 3)
+      e.kappa = E / (Real(3) * (Real(1) - Real(2) * nu));
+    else
+      e.kappa = E / (Real(2) * (Real(1) + nu) * (Real(1) - Real(2) * nu));
+    return e;
+  }
+
+  // Small-strain P-wave (uniaxial-strain) modulus kappa + 2 mu (1 - 1/d): lambda + 2 mu in 3D and in 2D plane
+  // strain. Gives the elastic wave speed sqrt(modulus / rho) for the time-step restriction.
+  template <int dim>
+  Real p_wave_modulus() const { return kappa + Real(2) * mu * (Real(1) - Real(1) / Real(dim)); }
+
+  // Kirchhoff pressure as a function of J, and its inverse (the J giving pressure p; requires p < kappa/2).
+  Real pressure_of_J(Real J) const { return -Real(0.5) * kappa * (J * J - Real(1)); }
+  Real J_of_pressure(Real p) const { return std::sqrt(Real(1) - Real(2) * p / kappa); }
+
+  template <int dim>
+  Real energy_density(const Mat<dim>& F) const {
+    const Real J = F.determinant();
+    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    return Real(0.5) * mu * (Jm2d * F.squaredNorm() - Real(dim)) +
+           Real(0.5) * kappa * (Real(0.5) * (J * J - Real(1)) - std::log(J));
+  }
+
+  template <int dim>
+  Mat<dim> kirchhoff(const Mat<dim>& F) const {
+    const Real J = F.determinant();
+    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Mat<dim> b = F * F.transpose();
+    Mat<dim> tau = (mu * Jm2d) * (b - (b.trace() / Real(dim)) * Mat<dim>::Identity());
+    tau.diagonal().array() += Real(0.5) * kappa * (J * J - Real(1));
+    return tau;
+  }
+
+  // First Piola-Kirchhoff stress P = tau F^-T.
+  template <int dim>
+  Mat<dim> first_piola(const Mat<dim>& F) const {
+    return kirchhoff<dim>(F) * F.inverse().transpose();
+  }
+
+  // Principal Kirchhoff stresses tau_i for singular values s (all > 0) of F, in the principal axes U.
+  template <int dim>
+  Vec<dim> kirchhoff_from_singular_values(const Vec<dim>& s) const {
+    const Real J = s.prod();
+    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Vec<dim> s2 = s.array().square().matrix();
+    Vec<dim> tau = (mu * Jm2d) * (s2.array() - s2.sum() / Real(dim)).matrix();
+    tau.array() += Real(0.5) * kappa * (J * J - Real(1));
+    return tau;
+  }
+};
+
+}  // namespace cdmpm
