@@ -71,7 +71,6 @@ class Walls final : public Boundary<dim> {
       Vec<dim> v = g.momentum[d];
       v[a] = -v[a];
       g.momentum[s] = v;
-      g.mass[s] = g.mass[d];
     });
   }
   void keep_inside(Vec<dim>& x) const override {

@@ -12,14 +12,15 @@
 //
 // Mirror symmetry at slip domain walls that lie on a grid plane (a slip wall is a symmetry plane): after
 // p2g, the mass and momentum scattered to ghost nodes beyond the wall are added to their mirror nodes
-// inside, with the normal momentum reversed (the contribution of the material's mirror image); after the
-// grid update, each ghost node takes its mirror node's velocity, reflected, so that g2p reads the same
-// symmetric field. Folding without unfolding makes the two transfers non-adjoint, and the scheme then
-// injects energy (a dam break blows up). Without it, the nodes next to a wall miss the stress of the particle rows that would lie
-// beyond it, and the particles next to the wall carry ~10 % more pressure than the hydrostatic value, an
-// error that does not shrink with dx. The mirror picture needs every particle on the material side of the
-// wall, so after advection a particle that crossed a domain wall is put back on the wall plane (the grid
-// velocity there already has no normal component; the crossing is an interpolation overshoot of O(dt v)).
+// inside, with the normal momentum reversed (the contribution of the material's mirror image). Without
+// this, the nodes next to a wall miss the stress of the particle rows that would lie beyond it, and the
+// particles next to the wall carry ~10 % more pressure than the hydrostatic value, an error that does not
+// shrink with dx. After the grid update, each ghost node takes its mirror node's velocity, reflected, so
+// that g2p reads the same symmetric field: folding without unfolding makes the two transfers non-adjoint,
+// and the scheme injects energy (a dam break blows up).
+// After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
+// there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
+// needs every particle on the material side of the wall.
 #pragma once
 
 #include <array>
