@@ -104,26 +104,45 @@ class HalfPlane final : public Boundary<dim> {
   Vec<dim> point_, normal_;
 };
 
-// Solid box: the normal is that of the nearest face.
+// Solid box [min, max] translated by d(t): the normal is that of the nearest face (all nearest faces on an
+// edge or a corner). Its velocity u(t) ramps
+// linearly from 0 to `velocity` U over the ramp time T (d = U t^2 / (2T) for t < T, U (t - T/2) after).
 template <int dim>
 class BoxObstacle final : public Boundary<dim> {
  public:
   explicit BoxObstacle(const BoundarySpec& s)
-      : Boundary<dim>(s.condition, s.friction), min_(to_vec<dim>(s.min)), max_(to_vec<dim>(s.max)) {}
+      : Boundary<dim>(s.condition, s.friction), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
+        final_velocity_(s.velocity.empty() ? Vec<dim>::Zero().eval() : to_vec<dim>(s.velocity)), ramp_(s.ramp_time),
+        velocity_(ramp_ > 0 ? Vec<dim>::Zero().eval() : final_velocity_), min_(min0_), max_(max0_) {}
+  void move_to(double t) override {
+    const double d = t < ramp_ ? t * t / (2 * ramp_) : t - ramp_ / 2;
+    velocity_ = static_cast<Real>(t < ramp_ ? t / ramp_ : 1.0) * final_velocity_;
+    min_ = min0_ + static_cast<Real>(d) * final_velocity_;
+    max_ = max0_ + static_cast<Real>(d) * final_velocity_;
+  }
   void apply(const Vec<dim>& x, Vec<dim>& v) const override {
-    Real best = 0;
-    Vec<dim> n = Vec<dim>::Zero();
+    Vec<dim> lo, hi;
     for (int a = 0; a < dim; ++a) {
-      const Real lo = x[a] - min_[a], hi = max_[a] - x[a];
-      if (lo < 0 || hi < 0) return;
-      if (a == 0 || lo < best) { best = lo; n = -Vec<dim>::Unit(a); }
-      if (hi < best) { best = hi; n = Vec<dim>::Unit(a); }
+      lo[a] = x[a] - min_[a];
+      hi[a] = max_[a] - x[a];
+      if (lo[a] < 0 || hi[a] < 0) return;
     }
-    apply_condition<dim>(this->condition_, this->friction_, n, v);
+    const Real best = std::min(lo.minCoeff(), hi.minCoeff());
+    const Real tie = best + Real(1e-9) * (Real(1) + x.cwiseAbs().maxCoeff());
+    // The nearest face gives the normal; a node on an edge or corner (equally near several faces) gets the
+    // condition of each, so a corner supports the material in both directions.
+    Vec<dim> relative = v - velocity_;
+    for (int a = 0; a < dim; ++a) {
+      if (lo[a] <= tie) apply_condition<dim>(this->condition_, this->friction_, -Vec<dim>::Unit(a), relative);
+      if (hi[a] <= tie) apply_condition<dim>(this->condition_, this->friction_, Vec<dim>::Unit(a), relative);
+    }
+    v = relative + velocity_;
   }
 
  private:
-  Vec<dim> min_, max_;
+  Vec<dim> min0_, max0_, final_velocity_;
+  double ramp_;
+  Vec<dim> velocity_, min_, max_;
 };
 
 // 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.

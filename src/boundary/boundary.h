@@ -9,6 +9,9 @@
 // with optional Coulomb friction for slip and separate: where the wall pushed (v.n < 0), the tangential
 // speed |v_t| is reduced by mu |v.n|, and set to zero if it is smaller than that.
 // The solid's normal for walls is the face normal; for obstacles it comes from the shape.
+// A moving obstacle (a box with a velocity u: a pusher, a gate, a grip) applies the same conditions to the
+// node velocity relative to it, v - u, so a sticky moving box drags the material with velocity u. Its
+// position is that at the start of the step (move_to(t) before the grid update).
 //
 // Mirror symmetry at slip domain walls that lie on a grid plane (a slip wall is a symmetry plane): after
 // p2g, the mass and momentum scattered to ghost nodes beyond the wall are added to their mirror nodes
@@ -57,6 +60,8 @@ class Boundary {
   virtual ~Boundary() = default;
   // Applies the condition to velocity v of the node at position x if x is inside the solid.
   virtual void apply(const Vec<dim>& x, Vec<dim>& v) const = 0;
+  // Moves the solid to its position at time t (moving obstacles only).
+  virtual void move_to(double) {}
   // Adds ghost-node mass and momentum to mirror nodes (domain walls only; see above).
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).

@@ -9,7 +9,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '1'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '2'};
 
 struct Writer {
   std::ofstream& os;
@@ -60,6 +60,8 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod<uint64_t>(m.frames.size());
     for (const auto& [t, f] : m.frames) { w.pod(t); w.str(f); }
     w.pod(m.probes_csv_bytes);
+    w.pod(m.icebergs_csv_bytes);
+    w.vec(m.first_iceberg);
     p.for_each_array([&](auto& a) { w.vec(a); });
     if (!os.flush()) throw std::runtime_error(path + ": writing checkpoint failed");
   }
@@ -72,7 +74,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   if (!is) throw std::runtime_error(path + ": no checkpoint to resume from");
   Reader r{is, path};
   char magic[8];
-  if (!is.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0) throw std::runtime_error(path + ": not a cdmpm checkpoint");
+  if (!is.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0) throw std::runtime_error(path + ": not a cdmpm checkpoint of this version (CDMPMCK2)");
   int32_t d = 0, real = 0;
   uint64_t n = 0;
   r.pod(d); r.pod(real); r.pod(n);
@@ -87,6 +89,8 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   m.frames.resize(nf);
   for (auto& [t, f] : m.frames) { r.pod(t); r.str(f); }
   r.pod(m.probes_csv_bytes);
+  r.pod(m.icebergs_csv_bytes);
+  r.vec(m.first_iceberg);
   p.for_each_array([&](auto& a) {
     r.vec(a);
     if (a.size() != n) throw std::runtime_error(path + ": checkpoint is corrupt (array sizes differ)");

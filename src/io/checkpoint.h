@@ -1,6 +1,6 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
 //
-// Layout: magic "CDMPMCK1", dim, sizeof(Real), particle count, the run metadata, then every particle
+// Layout: magic "CDMPMCK2", dim, sizeof(Real), particle count, the run metadata, then every particle
 // array raw (Particles::for_each_array order). Written to a temporary file and renamed, so the previous
 // checkpoint stays valid until the new one is complete. A resumed run continues bit for bit: the grid,
 // particle bins and speeds are all recomputed from the particle state.
@@ -24,6 +24,8 @@ struct CheckpointMeta {
   std::vector<double> still_levels;
   std::vector<std::pair<double, std::string>> frames;  // (time, file) written so far, for particles.pvd
   uint64_t probes_csv_bytes = 0;                        // size of probes.csv at the checkpoint
+  uint64_t icebergs_csv_bytes = 0;                      // size of icebergs.csv at the checkpoint
+  std::vector<double> first_iceberg;                    // IcebergTracker::first_ (empty: none yet)
 };
 
 template <int dim>

@@ -11,7 +11,8 @@
 //   y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0.
 //   p0 is the compressive strength (hydrostatic), beta p0 the hydrostatic tensile strength (cohesion).
 //
-// Return mapping (non-associative, CD-MPM), from the trial elastic F = U diag(s) V^T:
+// Return mapping (non-associative, CD-MPM), from the trial elastic F = U diag(s) V^T (math/svd.h: U, V
+// rotations, an inverted F has a negative last s):
 //   * y <= 0: elastic, F untouched (bitwise).
 //   * p > p0: project to the compressive tip (p0, 0): s_i = J^(1/d), kappa/2 (J^2 - 1) = -p0
 //             => J = sqrt(1 - 2 p0 / kappa) (closed form; tau = J sigma is the Kirchhoff stress).
@@ -25,32 +26,42 @@
 //             AM-GM), so Newton from m = mean(bhat) decreases monotonically to the root. s'_i = J^(1/d) sqrt(bhat'_i).
 //   F <- U diag(s') V^T.
 //
-// Hardening/softening (if `hardening`), CD-MPM rule. alpha is the log of the plastic volume change,
-// alpha = ln J^P, incremented by the volumetric part of the projection:
-//   * tips:       alpha += ln(J_trial / J_new);
-//   * q-branch:   J is kept, so CD-MPM uses an auxiliary point: the intersection (p_x, q_x) of the yield
-//                 surface with the ray from the ellipse centre (p_c, 0) to the trial (p, q); then
-//                 alpha += ln(J_trial / J(p_x)), J(p_x) = sqrt(1 - 2 p_x / kappa).
-//   p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))), eps = p0_floor = 1e-4.
-// SIGN CONVENTION: tension beyond the surface (p < p_c) gives J_new < J_trial, so alpha INCREASES, -alpha
-// shrinks and p0 DECREASES toward kappa eps: TENSION SOFTENS (damages) the ice, beta p0 -> beta kappa eps.
-// Compression beyond the surface (p > p_c) gives alpha DECREASES, p0 INCREASES: compression hardens.
+// Hardening/softening (if `hardening`). alpha is a signed accumulated plastic strain; p0 depends on it through
+//   p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))),  eps = p0_floor = 1e-4,
+// so p0 DECREASES as alpha INCREASES (down to kappa eps once alpha >= 0) and increases as alpha decreases.
+//   * q-branch (the specification's rule: driven by the DEVIATORIC plastic strain). With the Hencky (log)
+//     strains of the trial and projected elastic states, coaxial in U, the plastic strain increment is
+//     d eps^p = ln(s_trial) - ln(s_new) (componentwise, principal values); it is purely deviatoric because J
+//     is kept (sum_i d eps^p_i = ln(J_trial / J_new) = 0). Its equivalent (von Mises) measure is
+//         delta_eps = sqrt(2/3) |ln(s_trial) - ln(s_new)|   (Euclidean norm over the d principal values),
+//     the normalisation work-conjugate to q = sqrt(3/2) |dev tau| (q delta_eps = dev(tau) : d eps^p for a
+//     flow along dev tau; in 3D incompressible uniaxial flow (1, -1/2, -1/2) e gives delta_eps = |e|).
+//     Sign by the side of the ellipse centre p_c = (1 - beta) p0 / 2 (p = trial pressure = new pressure):
+//         p < p_c (tensile side):     alpha += delta_eps   (softening: p0 decreases),
+//         p > p_c (compressive side): alpha -= delta_eps   (hardening: p0 increases),
+//         p = p_c exactly:            alpha unchanged.
+//   * tips (unchanged, volumetric): alpha += ln(J_trial / J_new). At the tensile tip J_new < J_trial, so
+//     alpha increases (softening); at the compressive tip J_new > J_trial, alpha decreases (hardening).
+//   * elastic steps, and hardening == false: alpha is left untouched (bitwise).
+// SIGN CONVENTION, in short: alpha UP = weaker. TENSION SOFTENS (damages) the ice toward p0 = kappa eps,
+// beta p0 -> beta kappa eps (near-zero cohesion); COMPRESSION HARDENS it.
 // Initialise alpha with alpha_of_p0(p0_initial, kappa) (< 0) for a given initial strength p0_initial.
-// damage = 1 - p0 / p0_initial, clamped to [0, 1].
+// damage = 1 - p0 / p0_initial, clamped to [0, 1]; its maximum is 1 - kappa eps / p0_initial.
 //
-// Robustness: singular values are clamped to at least min_singular_value = 1e-6 (after making U, V proper
-// rotations, which moves the sign of an inverted F onto the last singular value). A degenerate or inverted F
-// is therefore mapped to a nearby non-inverted F with J >= 1e-6^d and never yields NaN; such an F is always
-// rewritten (the function then returns true even if the clamped state is elastic).
+// Robustness: singular values are clamped to at least min_singular_value = 1e-6 (U, V are proper rotations,
+// so the sign of an inverted F is on the last singular value, which the clamp then replaces). A degenerate or
+// inverted F is therefore mapped to a nearby non-inverted F with J >= 1e-6^d and never yields NaN; such an F
+// is always rewritten (the function then returns true even if the clamped state is elastic). s_trial, J_trial
+// above mean the values after this clamp.
 // All tolerances are relative (dimensionless stretches, or stresses relative to kappa/p0), so the same code
 // works for E = 1e4 Pa and E = 9e9 Pa.
 #pragma once
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
 #include "core/types.h"
+#include "math/svd.h"
 #include "material/neo_hookean_split.h"
 
 namespace cdmpm {
@@ -112,17 +123,9 @@ struct CohesiveCamClay {
   // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
   template <int dim>
   bool return_mapping(Mat<dim>& F, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
-    Eigen::JacobiSVD<Mat<dim>> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Mat<dim> U = svd.matrixU(), V = svd.matrixV();
-    Vec<dim> s = svd.singularValues();
-    if (U.determinant() < 0) {
-      U.col(dim - 1) *= Real(-1);
-      s(dim - 1) *= Real(-1);
-    }
-    if (V.determinant() < 0) {
-      V.col(dim - 1) *= Real(-1);
-      s(dim - 1) *= Real(-1);
-    }
+    Mat<dim> U, V;
+    Vec<dim> s;
+    svd<dim>(F, U, s, V);  // U, V rotations; an inverted F has s(dim - 1) < 0
     bool clamped = false;
     for (int i = 0; i < dim; ++i)
       if (!(s(i) >= min_singular_value)) {  // also catches a negative (inverted) last value
@@ -160,17 +163,6 @@ struct CohesiveCamClay {
     const Real q_target =
         std::sqrt(std::max(M * M * (p0 - p) * (p + beta * p0) / (Real(1) + Real(2) * beta), Real(0)));
     const Real c = q_target / q;
-    if (hardening) {
-      // CD-MPM: volumetric change to the surface point on the ray from the centre (p_c, 0) to (p, q).
-      // On the ray (p_c + t dp, t q): y = t^2 ((1 + 2 beta) q^2 + M^2 dp^2) - M^2 a^2, a = (1 + beta) p0 / 2.
-      const Real p_c = (Real(1) - beta) * p0 / Real(2);
-      const Real a = (Real(1) + beta) * p0 / Real(2);
-      const Real dp = p - p_c;
-      const Real t = M * a / std::sqrt((Real(1) + Real(2) * beta) * q * q + M * M * dp * dp);
-      const Real p_x = p_c + t * dp;
-      const Real J2x = Real(1) - Real(2) * p_x / e.kappa;
-      if (J2x > 0) alpha += std::log(J / std::sqrt(J2x));
-    }
     const Vec<dim> cd = c * bdev;
     // Newton on f(m) = prod(m + cd_i) - 1 from m = bmean (f >= 0 there): monotone decrease to the root.
     Real m = bmean;
@@ -189,6 +181,21 @@ struct CohesiveCamClay {
     const Real Jd = std::pow(J, Real(1) / Real(dim));
     Vec<dim> s_new;
     for (int i = 0; i < dim; ++i) s_new(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
+    if (hardening) {
+      // Equivalent deviatoric plastic strain increment sqrt(2/3) |ln s - ln s_new|, signed by the side of the
+      // ellipse centre (see the header). ln(s_i / s_new_i) = ln(bhat_i / bhat'_i) / 2.
+      const Real p_c = (Real(1) - beta) * p0 / Real(2);
+      Real sq = 0;
+      for (int i = 0; i < dim; ++i) {
+        const Real l = Real(0.5) * std::log(bhat(i) / (m + cd(i)));
+        sq += l * l;
+      }
+      const Real delta_eps = std::sqrt(Real(2) / Real(3) * sq);
+      if (std::isfinite(delta_eps)) {
+        if (p < p_c) alpha += delta_eps;
+        else if (p > p_c) alpha -= delta_eps;
+      }
+    }
     rebuild(s_new);
     return true;
   }

@@ -1,8 +1,11 @@
 // constitutive_update.h - per-particle update of the deformation state after grid-to-particle, then
 // advection of the particle positions x_p += dt v_p.
 //
-// Water: J <- J (1 + dt tr C_p), the discrete continuity equation dJ/dt = J div v
-// (material/weakly_compressible_water.h).
+// Every material: J <- J (1 + dt tr C_p), the discrete continuity equation dJ/dt = J div v, so J stays the
+// total volume ratio V / V0 (the water state; for ice it tracks the total, elastic and plastic, volume).
+// Ice additionally (Jiang et al. 2016 course notes, eq. 202; Wolper et al. 2019, sec. 4):
+//   F_trial = (I + dt C_p) F_elastic,   then the Cohesive Cam Clay return mapping projects F_trial onto the
+//   yield surface and updates the hardening variable alpha (material/cohesive_cam_clay.h).
 #pragma once
 
 #include <vector>
@@ -18,8 +21,11 @@ void constitutive_update(Particles<dim>& p, const std::vector<Material>& materia
 #pragma omp parallel for schedule(static)
   for (size_t q = 0; q < n; ++q) {
     const Material& m = materials[p.material[q]];
-    switch (m.kind) {
-      case MaterialKind::Water: p.J[q] = m.water.update_J<dim>(p.J[q], p.C[q], dt); break;
+    p.J[q] *= Real(1) + dt * p.C[q].trace();
+    if (m.kind == MaterialKind::Ice) {
+      Mat<dim> F = (Mat<dim>::Identity() + dt * p.C[q]) * p.F[q];
+      if (m.ice.plasticity) m.ice.plastic.return_mapping<dim>(F, p.alpha[q], m.ice.p0(p.alpha[q]), m.ice.elastic);
+      p.F[q] = F;
     }
     p.x[q] += dt * p.v[q];
   }

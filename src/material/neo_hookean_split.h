@@ -29,6 +29,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 
 #include "core/types.h"
 
@@ -79,6 +80,35 @@ struct NeoHookeanSplit {
   template <int dim>
   Mat<dim> first_piola(const Mat<dim>& F) const {
     return kirchhoff<dim>(F) * F.inverse().transpose();
+  }
+
+  // Diagonal F (stretches: horizontal axes equal, vertical axis last) of the uniaxial vertical Cauchy stress
+  // sigma_v with zero horizontal stress: the lithostatic state of a laterally free ice body under its own
+  // weight (sigma_v = -rho g depth). Newton on (ln s_h, ln s_v) with the residual
+  // (tau_h, tau_v - J sigma_v) / kappa; converges in a few iterations for |sigma_v| << kappa.
+  template <int dim>
+  Vec<dim> uniaxial_vertical_stretches(Real sigma_v) const {
+    Real lh = 0, lv = 0;
+    auto residual = [&](Real a, Real b) {
+      Vec<dim> s = Vec<dim>::Constant(std::exp(a));
+      s[dim - 1] = std::exp(b);
+      const Vec<dim> tau = kirchhoff_from_singular_values<dim>(s);
+      return Eigen::Matrix<Real, 2, 1>(tau[0] / kappa, (tau[dim - 1] - s.prod() * sigma_v) / kappa);
+    };
+    for (int it = 0; it < 50; ++it) {
+      const auto r = residual(lh, lv);
+      if (r.norm() < Real(64) * std::numeric_limits<Real>::epsilon()) break;
+      const Real h = std::sqrt(std::numeric_limits<Real>::epsilon());
+      Eigen::Matrix<Real, 2, 2> Jac;
+      Jac.col(0) = (residual(lh + h, lv) - r) / h;
+      Jac.col(1) = (residual(lh, lv + h) - r) / h;
+      const Eigen::Matrix<Real, 2, 1> d = Jac.partialPivLu().solve(-r);
+      lh += d[0];
+      lv += d[1];
+    }
+    Vec<dim> s = Vec<dim>::Constant(std::exp(lh));
+    s[dim - 1] = std::exp(lv);
+    return s;
   }
 
   // Principal Kirchhoff stresses tau_i for singular values s (all > 0) of F, in the principal axes U.

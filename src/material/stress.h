@@ -1,6 +1,11 @@
 // stress.h - Kirchhoff stress of a particle, dispatched on its material (used by p2g), plus the
 // per-material wave speed and stored energy used by the time step and the energy probes.
+//   Water: tau = -J p(J) I + viscous part (material/weakly_compressible_water.h).
+//   Ice:   tau(F_elastic) of the split Neo-Hookean energy (material/neo_hookean_split.h).
 #pragma once
+
+#include <algorithm>
+#include <cmath>
 
 #include "core/particles.h"
 #include "material/material.h"
@@ -11,15 +16,20 @@ template <int dim>
 inline Mat<dim> kirchhoff_stress(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
     case MaterialKind::Water: return m.water.kirchhoff<dim>(p.J[q], p.C[q]);
+    case MaterialKind::Ice: return m.ice.elastic.kirchhoff<dim>(p.F[q]);
   }
   return Mat<dim>::Zero();
 }
 
-// Cauchy pressure p = -tr(sigma)/dim of particle q.
+// Cauchy pressure p = -tr(sigma)/dim of particle q (sigma = tau / J, J the elastic volume ratio for ice).
 template <int dim>
 inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
     case MaterialKind::Water: return m.water.pressure(p.J[q]);
+    case MaterialKind::Ice: {
+      const Real Je = p.F[q].determinant();
+      return m.ice.elastic.pressure_of_J(Je) / Je;
+    }
   }
   return 0;
 }
@@ -29,15 +39,22 @@ template <int dim>
 inline Real particle_elastic_energy(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
     case MaterialKind::Water: return p.volume0[q] * m.water.energy_density(p.J[q]);
+    case MaterialKind::Ice: return p.volume0[q] * m.ice.elastic.energy_density<dim>(p.F[q]);
   }
   return 0;
 }
 
-// Largest wave speed of particle q's material in its current state.
+// Largest wave speed of particle q's material in its current state. Ice: P-wave speed
+// sqrt(M_p / rho) with the small-strain modulus M_p = kappa + 2 mu (1 - 1/d), raised by the current
+// density ratio J >= 1 (the volumetric tangent kappa/2 (J^2 + 1) J-scaled grows like J^2 in tension).
 template <int dim>
 inline Real particle_wave_speed(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
     case MaterialKind::Water: return m.water.wave_speed(p.J[q]);
+    case MaterialKind::Ice: {
+      const Real Je = std::max(p.F[q].determinant(), Real(1));
+      return Je * std::sqrt(m.ice.elastic.p_wave_modulus<dim>() / m.density);
+    }
   }
   return 0;
 }

@@ -2,12 +2,14 @@
 //
 // Pressure from the volume ratio J = V/V0 = rho0/rho (Monaghan 1994; Becker & Teschner 2007):
 //   p(J) = K/gamma (J^-gamma - 1),
-// with bulk modulus K (the slope dp/d(rho/rho0) at rest) and gamma = 7. Acoustic speed
+// with bulk modulus K (the slope dp/d(rho/rho0) at rest) and gamma = 7, cut off at p >= 0: water does not
+// sustain tension (a free surface or a body pulling away from the water opens a gap instead of pulling the
+// water with it through the shared grid; the standard cavitation cut-off of free-surface MPM/SPH). Acoustic speed
 //   c(J) = sqrt(dp/drho) = sqrt(K/rho0 J^(1-gamma)).
 // Optional Newtonian viscosity adds the deviatoric Cauchy stress 2 mu dev(D), D = sym(grad v).
 // Kirchhoff stress tau = J sigma = -J p I + 2 mu J dev(D).
-// Stored energy per reference volume, psi(J) = -int_1^J p dJ' = K/gamma [(J^(1-gamma) - 1)/(gamma - 1) + J - 1],
-// so that p = -dpsi/dJ. See docs/water.md for how to choose K.
+// Stored energy per reference volume, psi(J) = -int_1^J p dJ' = K/gamma [(J^(1-gamma) - 1)/(gamma - 1) + J - 1]
+// for J < 1 and 0 for J >= 1, so that p = -dpsi/dJ. See docs/water.md for how to choose K.
 #pragma once
 
 #include <algorithm>
@@ -20,7 +22,7 @@ namespace cdmpm {
 struct WeaklyCompressibleWater {
   Real rho0 = 1000, K = 2e5, gamma = 7, mu = 0;
 
-  Real pressure(Real J) const { return K / gamma * (std::pow(J, -gamma) - Real(1)); }
+  Real pressure(Real J) const { return J < Real(1) ? K / gamma * (std::pow(J, -gamma) - Real(1)) : Real(0); }
 
   // J at which the equation of state gives pressure p (used for the hydrostatic pre-compression).
   Real volume_ratio_at_pressure(Real p) const { return std::pow(Real(1) + gamma * p / K, Real(-1) / gamma); }
@@ -28,6 +30,7 @@ struct WeaklyCompressibleWater {
   Real wave_speed(Real J) const { return std::sqrt(K / rho0 * std::pow(J, Real(1) - gamma)); }
 
   Real energy_density(Real J) const {
+    if (J >= Real(1)) return 0;
     return K / gamma * ((std::pow(J, Real(1) - gamma) - Real(1)) / (gamma - Real(1)) + J - Real(1));
   }
 
@@ -41,10 +44,6 @@ struct WeaklyCompressibleWater {
     }
     return tau;
   }
-
-  // Explicit update of J over dt with velocity gradient C: J <- J (1 + dt tr C) (continuity equation).
-  template <int dim>
-  Real update_J(Real J, const Mat<dim>& C, Real dt) const { return J * (Real(1) + dt * C.trace()); }
 };
 
 }  // namespace cdmpm

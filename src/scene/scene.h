@@ -30,12 +30,21 @@ struct TimeSpec {
 
 struct MaterialSpec {
   std::string name;
-  std::string type;  // "water"
+  std::string type;  // "water" or "ice"
   double density = 0;  // reference density rho0 [kg/m^3]
   // water: Tait equation of state p = K/gamma ((rho/rho0)^gamma - 1), optional dynamic viscosity
   double bulk_modulus = 0;  // K [Pa]
   double gamma = 7;         // Tait exponent
   double viscosity = 0;     // dynamic viscosity mu [Pa s]
+  // ice: split Neo-Hookean elasticity + cohesive Cam-Clay plasticity (docs/ice.md)
+  double youngs_modulus = 0;   // E [Pa]
+  double poissons_ratio = 0.3; // nu
+  double M = 0;                // critical-state slope (from "M" or "friction_angle")
+  double beta = 0;             // cohesion: hydrostatic tensile strength / p0
+  double xi = 0;               // softening/hardening rate of p0(alpha)
+  double p0 = 0;               // initial pre-consolidation pressure [Pa] (from "p0", "alpha0" or "tensile_strength")
+  bool hardening = true;       // evolve p0 with the hardening variable alpha
+  bool plastic = true;         // false: purely elastic ice
 };
 
 struct ShapeSpec {
@@ -52,7 +61,10 @@ struct BodySpec {
   ShapeSpec shape;
   int particles_per_cell = 0;      // must be n^dim (n particles per axis per cell)
   std::vector<double> velocity;    // initial velocity, default zero
-  bool hydrostatic = true;         // water only: pre-compress with depth so a still pool stays still
+  // initial velocity gradient G (row-major dim x dim, default zero): v(x) = velocity + G (x - c), c the centre
+  // of the shape's bounding box; also the particles' initial APIC matrix C = G (a spinning or stretching body)
+  std::vector<double> velocity_gradient;
+  bool hydrostatic = true;         // start in equilibrium under gravity (water: hydrostatic; ice: lithostatic)
   std::optional<double> surface_level;  // free-surface height for the pre-compression; default shape top
 };
 
@@ -64,8 +76,10 @@ struct BoundarySpec {
   std::vector<std::string> faces;
   // half_plane: solid where (x - point) . normal < 0; normal points into the fluid
   std::vector<double> point, normal;
-  // box: solid inside [min, max]
-  std::vector<double> min, max;
+  // box: solid inside [min, max] at t = 0, moving with `velocity` (rigid translation; default at rest),
+  // reached by a linear ramp from rest over `ramp_time` [s] (0 = from the start)
+  std::vector<double> min, max, velocity;
+  double ramp_time = 0;
   // bathymetry 2D: polyline of (x, height) points with increasing x; solid below it
   std::vector<std::array<double, 2>> points;
   // bathymetry 3D: height field heights[j][i] at (origin[0] + i*spacing[0], origin[1] + j*spacing[1])
@@ -90,6 +104,11 @@ struct OutputSpec {
   bool frames = true;          // write particles_NNNN.vtu and particles.pvd
   int checkpoint_every = 0;    // checkpoint every N frames (0 = only at the end of the run)
   double probe_interval = 0;   // probes.csv sampling interval [s]; 0 = every frame interval / 10
+  // icebergs.csv (written when the scene has ice): connected bodies of intact ice (probe/icebergs.h)
+  int flow_axis = 0;              // axis along which an iceberg's length is measured
+  double damage_threshold = 0.5;  // a particle / cell with damage at or above this is broken
+  int min_iceberg_cells = 4;      // bodies with fewer particles than this many cells' worth are debris
+  double stop_after_first = -1;   // end the run this long [s] after the first iceberg separates; < 0 = never
 };
 
 struct Scene {

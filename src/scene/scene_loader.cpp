@@ -7,6 +7,10 @@
 // all messages share the form "<file>: <json.path>: expected <what>, got <value>".
 #include "scene/scene_loader.h"
 
+#include "material/cohesive_cam_clay.h"
+#include "material/neo_hookean_split.h"
+#include "scene/parameters.h"
+
 #include <algorithm>
 #include <cctype>
 #include <climits>
@@ -14,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -87,7 +92,7 @@ class Loader {
 
   Scene load(const json& j) {
     Node root{j, ""};
-    object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
+    object(root, {"parameters", "name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
                   "output"});
     s_.dim = dim_ = integer(required(root, "dim"), {2, 3});
     s_.name = root.has("name") ? string(root["name"]) : std::filesystem::path(file_).stem().string();
@@ -106,9 +111,17 @@ class Loader {
     probes(root);
     if (root.has("output")) {
       Node o = root["output"];
-      object(o, {"frames", "checkpoint_every"});
+      object(o, {"frames", "checkpoint_every", "icebergs"});
       s_.output.frames = o.has("frames") ? boolean(o["frames"]) : true;
       s_.output.checkpoint_every = o.has("checkpoint_every") ? integer(o["checkpoint_every"], ge(0)) : 0;
+      if (o.has("icebergs")) {
+        Node ib = o["icebergs"];
+        object(ib, {"flow_axis", "damage_threshold", "min_cells", "stop_after_first"});
+        if (ib.has("flow_axis")) s_.output.flow_axis = integer(ib["flow_axis"], {0, double(dim_ - 1)});
+        s_.output.damage_threshold = number(ib, "damage_threshold", {0, 1, true, true}, 0.5);
+        if (ib.has("min_cells")) s_.output.min_iceberg_cells = integer(ib["min_cells"], ge(1));
+        s_.output.stop_after_first = number(ib, "stop_after_first", ge(0), -1.0);
+      }
     }
     return std::move(s_);
   }
@@ -228,18 +241,72 @@ class Loader {
       if (!m.j.is_object()) expected(m, "an object");
       MaterialSpec spec;
       spec.name = item.key();
-      spec.type = string(required(m, "type"), {"water"});
-      object(m, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
-      spec.density = number(required(m, "density"), gt(0));
-      spec.bulk_modulus = number(required(m, "bulk_modulus"), gt(0));
-      spec.gamma = number(m, "gamma", gt(0), 7.0);
-      spec.viscosity = number(m, "viscosity", ge(0), 0.0);
+      spec.type = string(required(m, "type"), {"water", "ice"});
+      if (spec.type == "water") {
+        object(m, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
+        spec.density = number(required(m, "density"), gt(0));
+        spec.bulk_modulus = number(required(m, "bulk_modulus"), gt(0));
+        spec.gamma = number(m, "gamma", gt(0), 7.0);
+        spec.viscosity = number(m, "viscosity", ge(0), 0.0);
+      } else {
+        ice(m, spec);
+      }
       s_.materials.push_back(spec);
     }
   }
 
+  // Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
+  void ice(const Node& m, MaterialSpec& spec) {
+    object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
+               "alpha0", "tensile_strength", "hardening", "plastic"});
+    spec.density = number(required(m, "density"), gt(0));
+    spec.youngs_modulus = number(required(m, "youngs_modulus"), gt(0));
+    spec.poissons_ratio = number(m, "poissons_ratio", {-1, 0.5, true, true}, 0.3);
+    spec.plastic = m.has("plastic") ? boolean(m["plastic"]) : true;
+    spec.hardening = m.has("hardening") ? boolean(m["hardening"]) : true;
+    const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(spec.youngs_modulus, spec.poissons_ratio, dim_);
+    if (!spec.plastic) {
+      for (const char* key : {"M", "friction_angle", "beta", "xi", "p0", "alpha0", "tensile_strength"})
+        if (m.has(key)) fail(m.child(key), "not used when \"plastic\" is false (remove it)");
+      return;
+    }
+    if (m.has("M") == m.has("friction_angle"))
+      fail(m.path, "expected exactly one of \"M\" (critical-state slope) or \"friction_angle\" (degrees)");
+    if (m.has("M")) {
+      spec.M = number(m["M"], gt(0));
+    } else {
+      // Triaxial-compression Mohr-Coulomb match: M = 6 sin(phi) / (3 - sin(phi)).
+      const double phi = number(m["friction_angle"], {0, 90, true, true}) * std::numbers::pi / 180;
+      spec.M = 6 * std::sin(phi) / (3 - std::sin(phi));
+    }
+    spec.beta = number(required(m, "beta"), gt(0));
+    spec.xi = number(required(m, "xi"), gt(0));
+    const int given = m.has("p0") + m.has("alpha0") + m.has("tensile_strength");
+    if (given != 1)
+      fail(m.path, "expected exactly one of \"p0\" [Pa], \"alpha0\" or \"tensile_strength\" [Pa] (initial strength)");
+    CohesiveCamClay cc;
+    cc.M = static_cast<Real>(spec.M), cc.beta = static_cast<Real>(spec.beta), cc.xi = static_cast<Real>(spec.xi);
+    const double p0_max = 0.5 * e.kappa;  // the Kirchhoff pressure of the split model never exceeds kappa/2
+    const std::string limit = " (the initial p0 must be below kappa/2 = " + fmt(p0_max) + " Pa)";
+    if (m.has("p0")) {
+      spec.p0 = number(m["p0"], {0, p0_max, true, true}, limit);
+    } else if (m.has("alpha0")) {
+      spec.p0 = cc.p0_of_alpha(static_cast<Real>(number(m["alpha0"], {-kInf, 0, false, false})), e.kappa);
+      if (!(spec.p0 < p0_max)) expected(m["alpha0"], "a value giving p0 < kappa/2 = " + fmt(p0_max) + " Pa");
+    } else {
+      // The uniaxial strength of the yield surface is proportional to p0.
+      const double per_p0 = dim_ == 2 ? cc.uniaxial_strength<2>(1, true) : cc.uniaxial_strength<3>(1, true);
+      const double sigma_t = number(m["tensile_strength"], gt(0));
+      spec.p0 = sigma_t / per_p0;
+      if (!(spec.p0 < p0_max))
+        expected(m["tensile_strength"], "a strength below " + fmt(p0_max * per_p0) + " Pa (it needs p0 = " +
+                                            fmt(spec.p0) + " Pa, above kappa/2)");
+    }
+  }
+
   void body(const Node& b) {
-    object(b, {"material", "particles_per_cell", "shape", "velocity", "hydrostatic", "surface_level"});
+    object(b, {"material", "particles_per_cell", "shape", "velocity", "velocity_gradient", "hydrostatic",
+               "surface_level"});
     BodySpec spec;
     spec.material_index = material_ref(required(b, "material"));
     spec.material = s_.materials[spec.material_index].name;
@@ -250,6 +317,15 @@ class Loader {
       expected(ppc, dim_ == 2 ? "an integer n^2 (1, 4, 9, 16, ...)" : "an integer n^3 (1, 8, 27, 64, ...)");
     spec.shape = shape(required(b, "shape"));
     spec.velocity = b.has("velocity") ? numbers(b["velocity"], dim_) : std::vector<double>(dim_, 0.0);
+    if (b.has("velocity_gradient")) {
+      Node g = b["velocity_gradient"];
+      const std::string what = "an array of " + std::to_string(dim_) + " rows of " + std::to_string(dim_) + " numbers [1/s]";
+      if (array(g, 0, what) != static_cast<size_t>(dim_)) expected(g, what);
+      for (int r = 0; r < dim_; ++r) {
+        auto row = numbers(g[r], dim_);
+        spec.velocity_gradient.insert(spec.velocity_gradient.end(), row.begin(), row.end());
+      }
+    }
     spec.hydrostatic = b.has("hydrostatic") ? boolean(b["hydrostatic"]) : true;
     if (b.has("surface_level")) spec.surface_level = number(b["surface_level"]);
     s_.bodies.push_back(std::move(spec));
@@ -292,7 +368,7 @@ class Loader {
     Strings keys = {"type", "condition", "friction"};
     Strings extra = spec.type == "walls"        ? Strings{"faces"}
                     : spec.type == "half_plane" ? Strings{"point", "normal"}
-                    : spec.type == "box"        ? Strings{"min", "max"}
+                    : spec.type == "box"        ? Strings{"min", "max", "velocity", "ramp_time"}
                     : dim_ == 2                 ? Strings{"points"}
                                                 : Strings{"origin", "spacing", "heights"};
     keys.insert(keys.end(), extra.begin(), extra.end());
@@ -323,6 +399,8 @@ class Loader {
       for (double& c : spec.normal) c /= std::sqrt(norm);
     } else if (spec.type == "box") {
       min_max(n, spec.min, spec.max);
+      spec.velocity = n.has("velocity") ? numbers(n["velocity"], dim_) : std::vector<double>(dim_, 0.0);
+      spec.ramp_time = number(n, "ramp_time", ge(0), 0.0);
     } else if (dim_ == 2) {
       Node points = required(n, "points");
       spec.points = pairs(points, 2);
@@ -460,7 +538,9 @@ void apply_override(json& j, const std::string& text, const std::string& file) {
 
 Scene scene_from_json(json j, const std::string& path, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(j, o, path);
-  Scene scene = Loader(path).load(j);
+  nlohmann::json resolved = j;
+  substitute_parameters(resolved, path);
+  Scene scene = Loader(path).load(resolved);
   scene.path = path;
   scene.json = std::move(j);
   return scene;

@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "io/vtu_writer.h"
 #include "material/stress.h"
 #include "probe/energy.h"
+#include "probe/iceberg_tracker.h"
 #include "probe/probes.h"
 #include "sim/simulation.h"
 
@@ -35,16 +37,31 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
   VtuField mat{"material", 1, {}, {}, std::vector<int32_t>(P.material.begin(), P.material.end())};
   VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
   VtuField J{"J", 1, std::vector<float>(n), {}, {}};
+  // Ice state: damage in [0, 1], the hardening variable alpha and the current strength p0(alpha).
+  const bool ice = std::any_of(sim.materials.begin(), sim.materials.end(),
+                               [](const Material& m) { return m.kind == MaterialKind::Ice; });
+  const size_t ni = ice ? n : 0;
+  VtuField damage{"damage", 1, std::vector<float>(ni), {}, {}};
+  VtuField alpha{"alpha", 1, std::vector<float>(ni), {}, {}};
+  VtuField p0{"p0", 1, std::vector<float>(ni), {}, {}};
 #pragma omp parallel for schedule(static)
   for (size_t q = 0; q < n; ++q) {
+    const Material& m = sim.materials[P.material[q]];
     for (int a = 0; a < dim; ++a) {
       pts[3 * q + a] = P.x[q][a];
       vel.f32[3 * q + a] = static_cast<float>(P.v[q][a]);
     }
-    pres.f32[q] = static_cast<float>(particle_pressure(sim.materials[P.material[q]], P, q));
+    pres.f32[q] = static_cast<float>(particle_pressure(m, P, q));
     J.f32[q] = static_cast<float>(P.J[q]);
+    if (ice && m.kind == MaterialKind::Ice) {
+      damage.f32[q] = static_cast<float>(m.ice.damage(P.alpha[q]));
+      alpha.f32[q] = static_cast<float>(P.alpha[q]);
+      p0.f32[q] = static_cast<float>(m.ice.plasticity ? m.ice.p0(P.alpha[q]) : Real(0));
+    }
   }
-  write_vtu(path, pts, {vel, mat, pres, J});
+  std::vector<VtuField> fields = {vel, mat, pres, J};
+  if (ice) fields.insert(fields.end(), {damage, alpha, p0});
+  write_vtu(path, pts, fields);
 }
 
 std::string format_duration(double s) {
@@ -65,8 +82,9 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   const double frame_dt = scene.time.frame_interval, probe_dt = scene.output.probe_interval, end = scene.time.end;
   const EnergyTotals e0 = energy_totals(sim.particles, sim.materials, sim.gravity);
 
+  IcebergTracker<dim> icebergs(sim);
   CheckpointMeta meta;
-  std::ofstream csv;
+  std::ofstream csv, berg_csv;
   if (opt.resume) {
     meta = read_checkpoint(ckpt, sim.particles);
     sim.time = meta.time;
@@ -77,14 +95,26 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     const fs::path csv_path = out / "probes.csv";
     if (fs::exists(csv_path)) fs::resize_file(csv_path, meta.probes_csv_bytes);
     csv.open(csv_path, std::ios::app);
+    icebergs.first_ = meta.first_iceberg;
+    if (icebergs.active()) {
+      const fs::path berg_path = out / "icebergs.csv";
+      if (fs::exists(berg_path)) fs::resize_file(berg_path, meta.icebergs_csv_bytes);
+      berg_csv.open(berg_path, std::ios::app);
+    }
   } else {
     fs::create_directories(out);
     csv.open(out / "probes.csv", std::ios::trunc);
+    if (icebergs.active()) {
+      berg_csv.open(out / "icebergs.csv", std::ios::trunc);
+      berg_csv << IcebergTracker<dim>::csv_header() << '\n';
+    }
     meta.wave_dt_at_start = sim.wave_dt_at_start;
     meta.still_levels = probes.still_levels;
   }
   if (!csv) throw std::runtime_error((out / "probes.csv").string() + ": cannot write");
+  if (icebergs.active() && !berg_csv) throw std::runtime_error((out / "icebergs.csv").string() + ": cannot write");
   csv.precision(10);
+  berg_csv.precision(10);
   auto write_probes = [&] {
     csv << sim.time;
     for (double v : probes.sample(sim)) csv << ',' << v;
@@ -99,16 +129,20 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     meta.frames.emplace_back(sim.time, name);
     write_pvd((out / "particles.pvd").string(), meta.frames);
   };
+  auto write_icebergs = [&] { icebergs.write_frame(berg_csv, meta.frame_index); };
   auto checkpoint = [&] {
     meta.time = sim.time;
     meta.steps = sim.steps;
     meta.probes_csv_bytes = static_cast<uint64_t>(fs::file_size(out / "probes.csv"));
+    meta.icebergs_csv_bytes = icebergs.active() ? static_cast<uint64_t>(fs::file_size(out / "icebergs.csv")) : 0;
+    meta.first_iceberg = icebergs.first_;
     write_checkpoint(ckpt, sim.particles, meta);
   };
   if (!opt.resume) {
     csv << probes.csv_header() << '\n';
     write_probes();
     write_frame_now();
+    write_icebergs();
   }
 
   RunResult result{"completed", "", 0};
@@ -149,11 +183,22 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     if (hit && target == next_probe) {
       ++meta.probe_index;
       write_probes();
+      if (icebergs.sample(berg_csv, meta.frame_index) && opt.progress)
+        std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", tty ? "\n" : "",
+                     icebergs.first_[0], icebergs.first_[1], icebergs.first_[2]);
     }
     if (hit && target == next_frame) {
       ++meta.frame_index;
       write_frame_now();
+      write_icebergs();
       if (scene.output.checkpoint_every > 0 && meta.frame_index % scene.output.checkpoint_every == 0) checkpoint();
+    }
+    if (scene.output.stop_after_first >= 0 && !icebergs.first_.empty() &&
+        sim.time >= icebergs.first_[0] + scene.output.stop_after_first) {
+      std::ostringstream os;
+      os << "stopped " << scene.output.stop_after_first << " s after the first iceberg (output.icebergs.stop_after_first)";
+      result.reason = os.str();
+      break;
     }
     if (opt.progress && Clock::now() - last_progress > std::chrono::seconds(2)) {
       progress_line(false);
@@ -178,6 +223,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
   s["energy"] = {{"kinetic", e1.kinetic}, {"gravitational", e1.gravitational}, {"elastic", e1.elastic}, {"total", e1.total()}};
   s["energy_initial"] = {{"kinetic", e0.kinetic}, {"gravitational", e0.gravitational}, {"elastic", e0.elastic}, {"total", e0.total()}};
+  if (icebergs.active()) s["first_iceberg"] = icebergs.summary();
   s["status"] = result.status;
   s["reason"] = result.reason;
   s["resumed"] = opt.resume;

@@ -31,6 +31,20 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
       m.kind = MaterialKind::Water;
       m.water = {static_cast<Real>(ms.density), static_cast<Real>(ms.bulk_modulus), static_cast<Real>(ms.gamma),
                  static_cast<Real>(ms.viscosity)};
+    } else {
+      m.kind = MaterialKind::Ice;
+      IceModel& ice = m.ice;
+      ice.elastic = NeoHookeanSplit::from_young_poisson(static_cast<Real>(ms.youngs_modulus),
+                                                        static_cast<Real>(ms.poissons_ratio), dim);
+      ice.plasticity = ms.plastic;
+      ice.plastic.M = static_cast<Real>(ms.M);
+      ice.plastic.beta = static_cast<Real>(ms.beta);
+      ice.plastic.xi = static_cast<Real>(ms.xi);
+      ice.plastic.hardening = ms.hardening;
+      ice.p0_initial = static_cast<Real>(ms.p0);
+      ice.alpha_initial = ms.plastic ? ice.plastic.alpha_of_p0(ice.p0_initial, ice.elastic.kappa) : Real(0);
+      // Damage is measured against the strength the particle actually starts with.
+      if (ms.plastic) ice.p0_initial = ice.p0(ice.alpha_initial);
     }
     materials.push_back(m);
   }
@@ -47,8 +61,13 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
 }
 
 // Fills a body's shape with particles on the lattice (k + 1/2) dx / n, n = ppc^(1/dim) per axis, so bodies
-// that share a face tile without gaps or overlaps. Water is pre-compressed to hydrostatic equilibrium:
-// at depth d below the surface level, p = rho0 |g| d and J = J(p) from the equation of state.
+// that share a face tile without gaps or overlaps. With `hydrostatic` (default) bodies start in equilibrium
+// under gravity, d being the depth below the body's surface level:
+//   water: pre-compressed to p = rho0 |g| d, J = J(p) from the equation of state;
+//   ice:   lithostatic uniaxial state sigma_v = -rho0 |g| d, sigma_h = 0 (a laterally free slab on a bed),
+//          d measured from the body's own top in each lattice column (unless surface_level is given),
+//          F = diag(s_h, s_v) from NeoHookeanSplit::uniaxial_vertical_stretches.
+// The particle's current volume is (dx/n)^dim; its reference volume is that over J.
 template <int dim>
 void Simulation<dim>::seed_body(const BodySpec& body) {
   const int n = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
@@ -61,27 +80,52 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
   const double g = -gravity[vertical_axis<dim>];
   Vec<dim> v0 = Vec<dim>::Zero();
   for (int a = 0; a < dim && !body.velocity.empty(); ++a) v0[a] = static_cast<Real>(body.velocity[a]);
+  Mat<dim> G = Mat<dim>::Zero();
+  Vec<dim> centre;
+  for (int a = 0; a < dim; ++a) centre[a] = static_cast<Real>(0.5 * (shape.lower(a) + shape.upper(a)));
+  if (!body.velocity_gradient.empty())
+    for (int r = 0; r < dim; ++r)
+      for (int c = 0; c < dim; ++c) G(r, c) = static_cast<Real>(body.velocity_gradient[r * dim + c]);
 
   IVec<dim> lo, hi;
   for (int a = 0; a < dim; ++a) {
     lo[a] = static_cast<int>(std::floor(shape.lower(a) / h - 0.5));
     hi[a] = static_cast<int>(std::ceil(shape.upper(a) / h - 0.5));
   }
+  // Lattice columns along the vertical axis (the last), one at a time, so each column's top is known.
+  constexpr int up = vertical_axis<dim>;
   IVec<dim> k = lo;
+  std::vector<Eigen::Matrix<double, dim, 1>> column;
   while (true) {
-    Eigen::Matrix<double, dim, 1> x;
-    for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h;
-    if (shape.contains(x)) {
+    column.clear();
+    for (k[up] = lo[up]; k[up] <= hi[up]; ++k[up]) {
+      Eigen::Matrix<double, dim, 1> x;
+      for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h;
+      if (shape.contains(x)) column.push_back(x);
+    }
+    // Ice: depth below the body's own top surface in this column (a sloping slab); water: below the level.
+    const double top = column.empty() ? 0 : column.back()[up] + 0.5 * h;
+    const double level = mat.kind == MaterialKind::Ice && !body.surface_level ? top : surface;
+    for (const auto& x : column) {
       Real J = 1;
+      Mat<dim> F = Mat<dim>::Identity();
+      const Real pressure = static_cast<Real>(mat.density * g * std::max(0.0, level - x[up]));
       if (mat.kind == MaterialKind::Water && body.hydrostatic && g > 0) {
-        const double depth = std::max(0.0, surface - x[vertical_axis<dim>]);
-        J = mat.water.volume_ratio_at_pressure(static_cast<Real>(mat.density * g * depth));
+        J = mat.water.volume_ratio_at_pressure(pressure);
+      } else if (mat.kind == MaterialKind::Ice && body.hydrostatic && g > 0) {
+        const Vec<dim> st = mat.ice.elastic.template uniaxial_vertical_stretches<dim>(-pressure);
+        F = st.asDiagonal();
+        J = st.prod();
       }
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
       const Real V0 = static_cast<Real>(vol) / J;
-      particles.add(x.template cast<Real>(), v0, mat.density * V0, V0, J, body.material_index);
+      const Vec<dim> xp = x.template cast<Real>();
+      particles.add(xp, v0 + G * (xp - centre), mat.density * V0, V0, J, body.material_index,
+                    mat.kind == MaterialKind::Ice ? mat.ice.alpha_initial : Real(0));
+      particles.C.back() = G;
+      particles.F.back() = F;
     }
-    int a = dim - 1;
+    int a = up - 1;
     for (; a >= 0; --a) {
       if (++k[a] <= hi[a]) break;
       k[a] = lo[a];
@@ -123,6 +167,7 @@ void Simulation<dim>::step(Real dt) {
   grid.clear();
   p2g(particles, materials, bins_, grid, dt);
   for (const auto& b : boundaries) b->fold_ghosts(grid);
+  for (const auto& b : boundaries) b->move_to(time);
   grid_update(grid, gravity, dt, boundaries);
   for (const auto& b : boundaries) b->unfold_ghosts(grid);
   g2p(particles, grid);

@@ -101,6 +101,34 @@ TEST(Cli, ResumeGivesBitwiseIdenticalState) {
   EXPECT_NE(r.output.find("checkpoint"), std::string::npos) << r.output;
 }
 
+// The same for ice (elastic F, hardening alpha, icebergs.csv, the first-iceberg record in the checkpoint):
+// the coarse sliding block pushed hard enough to break within the run, resumed at half time, and on 1 thread.
+TEST(Cli, IceResumeAndThreadCountGiveBitwiseIdenticalState) {
+  TempDir dir;
+  const std::string scene = source_path("scenes/sliding_block_2d.json");
+  const std::vector<std::string> common = {"--quiet", "--set", "parameters.cells_per_H=8", "--set",
+                                           "parameters.push_speed=10", "--set", "parameters.push_ramp=5", "--set",
+                                           "output.icebergs.stop_after_first=1000"};
+  auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
+  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--threads", "2", "--set", "time.end=24"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--out", dir / "one", "--threads", "1", "--set", "time.end=24"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--out", dir / "half", "--threads", "2", "--set", "time.end=12"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--resume", dir / "half", "--threads", "2", "--set", "time.end=24"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "half/checkpoint.bin");
+  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "one/checkpoint.bin");
+  for (const char* f : {"probes.csv", "icebergs.csv"}) {
+    EXPECT_EQ(read_bytes(dir / ("full/" + std::string(f))), read_bytes(dir / ("half/" + std::string(f)))) << f;
+    EXPECT_EQ(read_bytes(dir / ("full/" + std::string(f))), read_bytes(dir / ("one/" + std::string(f)))) << f;
+  }
+  const auto full = read_json(dir / "full/summary.json");
+  EXPECT_EQ(read_json(dir / "half/summary.json")["first_iceberg"], full["first_iceberg"]);
+  EXPECT_TRUE(full["first_iceberg"].is_object()) << "the run should break the slab before t = 24 s";
+}
+
 TEST(Cli, OneAndTwoThreadsGiveBitwiseIdenticalState) {
   TempDir dir;
   for (const char* t : {"1", "2"}) {

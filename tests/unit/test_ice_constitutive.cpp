@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <type_traits>
 #include <vector>
@@ -322,3 +324,159 @@ TEST(IceConstitutive, SofteningSignConvention) {
   EXPECT_EQ(CohesiveCamClay::damage(0, p0i), 1);
   EXPECT_NEAR(CohesiveCamClay::damage(Real(0.25) * p0i, p0i), 0.75, 1e-15);
 }
+
+// ---- Hardening rule (q-branch driven by the deviatoric plastic strain; see cohesive_cam_clay.h) ----------
+//
+// A diagonal elastic F is driven through repeated isochoric shear increments (+dg on axis 0, -dg on axis 1)
+// with J reset every step so that the trial pressure is p = ratio * p0 for the CURRENT p0 = p0(alpha):
+// ratio = -0.1 lies on the tensile side of the centre (p_c / p0 = (1 - beta) / 2 = 0.35) and inside
+// (-beta p0, p0), ratio = 0.8 on the compressive side; both are in the q-branch. The SVD of a diagonal matrix
+// is a signed permutation, so F stays diagonal and its diagonal holds the principal stretches of each axis.
+// Per step: elastic -> alpha bitwise unchanged; plastic -> alpha changes by exactly
+// +-sqrt(2/3) |ln diag(F_trial) - ln diag(F_new)| (+ tensile side, - compressive side).
+// Tolerance of that identity: each log of a stretch ratio carries a few eps of absolute roundoff (stretches
+// O(1)), the norm adds ~eps relative and alpha + delta rounds at eps |alpha| (|alpha| < 1): 64 eps absolute,
+// against typical increments sqrt(2/3) sqrt(2) dg ~ 2.3e-4 (tolerance / increment ~ 3e-2 in float, 6e-11 in
+// double).
+namespace {
+
+template <int dim>
+struct PathOutcome {
+  Real p0_final = 0, alpha_initial = 0, alpha_final = 0;
+  int n_elastic = 0, n_plastic = 0;
+};
+
+template <int dim>
+PathOutcome<dim> drive_shear_path(const CohesiveCamClay& cc, const NeoHookeanSplit& e, Real p0_initial,
+                                  Real ratio, int steps) {
+  constexpr Real eps = std::numeric_limits<Real>::epsilon();
+  const Real tol = 64 * eps;
+  const Real dg = Real(2e-4);
+  const bool tensile = ratio * p0_initial < (1 - cc.beta) * p0_initial / 2;
+  Real alpha = cc.alpha_of_p0(p0_initial, e.kappa);
+  Real p0 = cc.p0_of_alpha(alpha, e.kappa);  // = p0_initial up to roundoff; the path compares p0(alpha) only
+  Vec<dim> log_s = Vec<dim>::Zero();  // elastic log stretches, axis by axis
+  PathOutcome<dim> out;
+  out.alpha_initial = alpha;
+  for (int step = 0; step < steps; ++step) {
+    Vec<dim> ls = log_s;
+    ls(0) += dg;
+    ls(1) -= dg;
+    ls.array() += std::log(e.J_of_pressure(ratio * p0)) / Real(dim) - ls.mean();  // prescribe J
+    Mat<dim> F = Mat<dim>(ls.array().exp().matrix().asDiagonal());
+    const Mat<dim> F_trial = F;
+    const Real alpha_old = alpha;
+    const bool plastic = cc.return_mapping<dim>(F, alpha, p0, e);
+    EXPECT_LE((F - Mat<dim>(F.diagonal().asDiagonal())).norm(), tol) << "F must stay diagonal";
+    if (!plastic) {
+      ++out.n_elastic;
+      EXPECT_EQ(alpha, alpha_old) << "step " << step;  // bitwise
+    } else {
+      ++out.n_plastic;
+      const Vec<dim> dlog = (F_trial.diagonal().array() / F.diagonal().array()).log().matrix();
+      EXPECT_LT(std::abs(dlog.sum()), tol) << "q-branch plastic strain must be deviatoric";
+      const Real delta = std::sqrt(Real(2) / Real(3)) * dlog.norm();
+      EXPECT_GT(delta, 0);
+      if (cc.hardening) {
+        EXPECT_NEAR(alpha - alpha_old, tensile ? delta : -delta, tol) << "step " << step;
+      } else {
+        EXPECT_EQ(alpha, alpha_old);
+      }
+    }
+    const Real p0_new = cc.p0_of_alpha(alpha, e.kappa);
+    if (tensile) {
+      EXPECT_LE(p0_new, p0) << "step " << step;  // monotone softening
+      if (plastic && cc.hardening && alpha_old < 0) { EXPECT_LT(p0_new, p0) << "step " << step; }
+    } else {
+      EXPECT_GE(p0_new, p0) << "step " << step;  // monotone hardening
+      if (plastic && cc.hardening) { EXPECT_GT(p0_new, p0) << "step " << step; }
+    }
+    log_s = F.diagonal().array().log().matrix();
+    p0 = p0_new;
+  }
+  out.p0_final = p0;
+  out.alpha_final = alpha;
+  return out;
+}
+
+template <int dim>
+void check_tensile_softening() {
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(Real(9e9), Real(0.3), dim);
+  CohesiveCamClay cc;
+  const Real p0_initial = Real(1e-2) * e.kappa;
+  const auto out = drive_shear_path<dim>(cc, e, p0_initial, Real(-0.1), 400);
+  EXPECT_GT(out.n_elastic, 0);
+  EXPECT_GT(out.n_plastic, 10);
+  // p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))) is exactly kappa eps once alpha >= 0.
+  EXPECT_GE(out.alpha_final, 0);
+  EXPECT_EQ(out.p0_final, cc.p0_of_alpha(Real(0), e.kappa));
+  EXPECT_NEAR(out.p0_final, CohesiveCamClay::p0_floor * e.kappa, 4 * std::numeric_limits<Real>::epsilon() * out.p0_final);
+  // Damage reaches its maximum 1 - kappa eps / p0_initial = 1 - 1e-4 / 1e-2 = 0.99 (near-zero cohesion).
+  EXPECT_NEAR(CohesiveCamClay::damage(out.p0_final, p0_initial), Real(1) - CohesiveCamClay::p0_floor / Real(1e-2),
+              8 * std::numeric_limits<Real>::epsilon());
+}
+
+template <int dim>
+void check_compressive_hardening() {
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(Real(9e9), Real(0.3), dim);
+  CohesiveCamClay cc;
+  const Real p0_initial = Real(1e-2) * e.kappa;
+  const auto out = drive_shear_path<dim>(cc, e, p0_initial, Real(0.8), 200);
+  EXPECT_GT(out.n_elastic, 0);
+  EXPECT_GT(out.n_plastic, 0);
+  EXPECT_GT(out.p0_final, p0_initial);
+  EXPECT_LT(out.alpha_final, out.alpha_initial);
+}
+
+template <int dim>
+void check_no_hardening_leaves_alpha() {
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(Real(9e9), Real(0.3), dim);
+  CohesiveCamClay cc;
+  cc.hardening = false;
+  const Real p0 = Real(1e-2) * e.kappa;
+  for (Real ratio : {Real(-0.1), Real(0.8)}) {
+    const auto out = drive_shear_path<dim>(cc, e, p0, ratio, 100);  // checks alpha bitwise every step
+    EXPECT_GT(out.n_plastic, 0);
+    // Bitwise against the path's own start value (a separately evaluated alpha_of_p0 / p0_of_alpha may be
+    // constant-folded by the compiler and differ from the run-time libm result in the last bit).
+    EXPECT_EQ(out.alpha_final, out.alpha_initial);
+  }
+  // Tips: hydrostatic trial states beyond p0 and beyond -beta p0.
+  for (Real p_trial : {Real(1.5) * p0, Real(-0.6) * p0}) {
+    Mat<dim> F = std::pow(e.J_of_pressure(p_trial), Real(1) / Real(dim)) * Mat<dim>::Identity();
+    const Real alpha0 = cc.alpha_of_p0(p0, e.kappa);
+    Real alpha = alpha0;
+    EXPECT_TRUE(cc.return_mapping<dim>(F, alpha, p0, e));
+    EXPECT_EQ(alpha, alpha0);
+  }
+}
+
+// Tip branches keep the volumetric rule alpha += ln(J_trial / J_new) (roundoff of two determinants and a log:
+// 64 eps absolute, against increments >= 1e-3).
+template <int dim>
+void check_tip_rule() {
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(Real(9e9), Real(0.3), dim);
+  CohesiveCamClay cc;
+  const Real p0 = Real(1e-2) * e.kappa;
+  for (Real p_trial : {Real(1.5) * p0, Real(-0.6) * p0}) {
+    Mat<dim> F = std::pow(e.J_of_pressure(p_trial), Real(1) / Real(dim)) * Mat<dim>::Identity();
+    const Real J_trial = F.determinant();
+    const Real alpha0 = cc.alpha_of_p0(p0, e.kappa);
+    Real alpha = alpha0;
+    EXPECT_TRUE(cc.return_mapping<dim>(F, alpha, p0, e));
+    const Real expected = std::log(J_trial / F.determinant());
+    EXPECT_NEAR(alpha - alpha0, expected, 64 * std::numeric_limits<Real>::epsilon());
+    if (p_trial > 0) { EXPECT_LT(alpha, alpha0); } else { EXPECT_GT(alpha, alpha0); }
+  }
+}
+
+}  // namespace
+
+TEST(IceConstitutive, TensileShearSoftensToFloor2D) { check_tensile_softening<2>(); }
+TEST(IceConstitutive, TensileShearSoftensToFloor3D) { check_tensile_softening<3>(); }
+TEST(IceConstitutive, CompressiveShearHardens2D) { check_compressive_hardening<2>(); }
+TEST(IceConstitutive, CompressiveShearHardens3D) { check_compressive_hardening<3>(); }
+TEST(IceConstitutive, NoHardeningLeavesAlpha2D) { check_no_hardening_leaves_alpha<2>(); }
+TEST(IceConstitutive, NoHardeningLeavesAlpha3D) { check_no_hardening_leaves_alpha<3>(); }
+TEST(IceConstitutive, TipsKeepVolumetricRule2D) { check_tip_rule<2>(); }
+TEST(IceConstitutive, TipsKeepVolumetricRule3D) { check_tip_rule<3>(); }

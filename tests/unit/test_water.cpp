@@ -25,13 +25,23 @@ TEST(WeaklyCompressibleWater, PreCompressionInvertsPressure) {
 
 TEST(WeaklyCompressibleWater, WaveSpeedIsSqrtDpDrho) {
   const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
-  for (double J : {0.98, 1.0, 1.02}) {
+  for (double J : {0.98, 0.99, 0.999}) {  // compressed states; at J >= 1 the pressure is cut off at 0
     // rho = rho0 / J; dp/drho = dp/dJ * dJ/drho = p'(J) * (-J^2 / rho0)
     const double h = 1e-7;
     const double dpdJ = (w.pressure(Real(J + h)) - w.pressure(Real(J - h))) / (2 * h);
     const double c2 = -dpdJ * J * J / w.rho0;
     EXPECT_NEAR(w.wave_speed(Real(J)), std::sqrt(c2), 1e-5 * std::sqrt(c2));
   }
+}
+
+TEST(WeaklyCompressibleWater, NoTensionBeyondTheReferenceVolume) {
+  const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
+  for (double J : {1.0, 1.001, 1.5}) {
+    EXPECT_EQ(w.pressure(Real(J)), 0);
+    EXPECT_EQ(w.energy_density(Real(J)), 0);
+  }
+  EXPECT_GT(w.pressure(Real(0.999)), 0);
+  EXPECT_GT(w.energy_density(Real(0.999)), 0);
 }
 
 TEST(WeaklyCompressibleWater, ViscousStressIsDeviatoricAndSymmetric) {

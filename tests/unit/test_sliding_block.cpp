@@ -1,0 +1,48 @@
+// test_sliding_block.cpp - the ice scenes end to end, coarse: scenes/sliding_block_2d.json at D/H = 0.4 and
+// H/dx = 8 (the validation sweep is tools/sweep_sliding_block.py). The slab is pushed over the bed edge;
+// the run must detect the first iceberg (a second connected body of intact ice, probe/icebergs.h), report
+// it in summary.json and icebergs.csv, conserve mass to round-off, and keep the ice damage in [0, 1].
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cli_helpers.h"
+
+namespace cdmpm::testing {
+namespace {
+
+TEST(SlidingBlock, CoarseRunDetectsFirstIceberg) {
+  TempDir dir;
+  const auto r = run_cdmpm({"run", source_path("scenes/sliding_block_2d.json"), "--out", dir / "out", "--quiet",
+                            "--threads", "2", "--set", "parameters.D_over_H=0.4", "--set", "parameters.cells_per_H=8"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto s = read_json(dir / "out/summary.json");
+  EXPECT_LT(std::abs(s["mass_change"].get<double>()), 1e-12);
+  ASSERT_TRUE(s.contains("first_iceberg") && s["first_iceberg"].is_object()) << s.dump(2);
+  const auto& b = s["first_iceberg"];
+  const double H = 100, x_edge = 900;
+  // The berg broke off the overhang: it lies beyond the bed edge and is no longer than the overhang then.
+  const auto probes = read_probes(dir / "out/probes.csv");
+  double overhang = 0;
+  for (size_t i = 0; i < probes.at("time").size(); ++i)
+    if (probes.at("time")[i] <= b["time"].get<double>()) overhang = probes.at("ice_front")[i] - x_edge;
+  EXPECT_GT(b["length"].get<double>(), 0);
+  EXPECT_LE(b["length"].get<double>(), overhang + 0.5 * H / 8);
+  EXPECT_GT(b["centroid"][0].get<double>(), x_edge - 0.5 * H);
+  // icebergs.csv: header and one row per body per frame (the glacier, id 0, in every frame), plus the
+  // detection of the first iceberg (a glacier row and at least one berg row).
+  std::ifstream csv(dir / "out/icebergs.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "frame,time,id,particles,volume,length,height,centroid_x,centroid_y");
+  int glacier_rows = 0, berg_rows = 0;
+  while (std::getline(csv, line)) {
+    const auto c1 = line.find(','), c2 = line.find(',', c1 + 1), c3 = line.find(',', c2 + 1);
+    (std::stoi(line.substr(c2 + 1, c3 - c2 - 1)) == 0 ? glacier_rows : berg_rows)++;
+  }
+  EXPECT_EQ(glacier_rows, static_cast<int>(s["sim_time"].get<double>()) + 2);  // frame_interval 1 s
+  EXPECT_GT(berg_rows, 0);
+}
+
+}  // namespace
+}  // namespace cdmpm::testing
