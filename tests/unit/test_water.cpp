@@ -1,13 +1,25 @@
 // test_water.cpp - Tait equation of state: pressure is minus the derivative of the stored energy,
 // the hydrostatic pre-compression inverts the pressure law, and the acoustic speed is sqrt(dp/drho).
+// Tolerances scale with the unit roundoff eps of Real. The two finite-difference checks need double
+// precision: in float the energy K/gamma [...] loses its significant digits to cancellation near J = 1.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <type_traits>
 
 #include "material/weakly_compressible_water.h"
 
 namespace cdmpm {
 namespace {
 
+constexpr double kEps = std::numeric_limits<Real>::epsilon();
+#define SKIP_IF_FLOAT()                          \
+  if constexpr (!std::is_same_v<Real, double>) \
+  GTEST_SKIP() << "finite differences of the Tait energy need double precision"
+
 TEST(WeaklyCompressibleWater, PressureIsMinusEnergyDerivative) {
+  SKIP_IF_FLOAT();
   const WeaklyCompressibleWater w{1000, 2e5, 7, 0};
   for (double J : {0.97, 0.99, 1.0, 1.01, 1.05}) {
     const double h = 1e-6;
@@ -20,10 +32,13 @@ TEST(WeaklyCompressibleWater, PressureIsMinusEnergyDerivative) {
 
 TEST(WeaklyCompressibleWater, PreCompressionInvertsPressure) {
   const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
-  for (double p : {0.0, 1e3, 1e4, 5e4}) EXPECT_NEAR(w.pressure(w.volume_ratio_at_pressure(Real(p))), p, 1e-9 * w.K);
+  // The round trip loses a few ulps of J, each worth K ulp(J) ~ K eps of pressure.
+  for (double p : {0.0, 1e3, 1e4, 5e4})
+    EXPECT_NEAR(w.pressure(w.volume_ratio_at_pressure(Real(p))), p, std::max(1e-9, 64 * kEps) * w.K);
 }
 
 TEST(WeaklyCompressibleWater, WaveSpeedIsSqrtDpDrho) {
+  SKIP_IF_FLOAT();
   const WeaklyCompressibleWater w{1000, 1e6, 7, 0};
   for (double J : {0.98, 0.99, 0.999}) {  // compressed states; at J >= 1 the pressure is cut off at 0
     // rho = rho0 / J; dp/drho = dp/dJ * dJ/drho = p'(J) * (-J^2 / rho0)
@@ -49,9 +64,10 @@ TEST(WeaklyCompressibleWater, ViscousStressIsDeviatoricAndSymmetric) {
   Mat<2> C;
   C << 0.3, 1.0, -0.2, 0.5;
   const Mat<2> tau = w.kirchhoff<2>(1, C);
-  EXPECT_NEAR(tau.trace(), 0, 1e-15);  // J = 1: no pressure, viscous part traceless
-  EXPECT_NEAR(tau(0, 1), tau(1, 0), 1e-15);
-  EXPECT_NEAR(tau(0, 1), 2 * 1e-3 * 0.5 * (1.0 - 0.2), 1e-15);
+  const double tol = 8 * kEps * 1e-3;  // a few roundings of numbers of size mu |C| = 1e-3
+  EXPECT_NEAR(tau.trace(), 0, tol);  // J = 1: no pressure, viscous part traceless
+  EXPECT_NEAR(tau(0, 1), tau(1, 0), tol);
+  EXPECT_NEAR(tau(0, 1), 2 * 1e-3 * 0.5 * (1.0 - 0.2), tol);
 }
 
 }  // namespace
