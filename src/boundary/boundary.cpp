@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace cdmpm {
@@ -14,6 +15,23 @@ Vec<dim> to_vec(const std::vector<double>& a) {
   Vec<dim> v;
   for (int i = 0; i < dim; ++i) v[i] = static_cast<Real>(a[i]);
   return v;
+}
+
+// Mirror symmetry across a plane normal to `axis` (boundary.h): fold adds ghost node src's mass and
+// reflected momentum to its mirror node dst; unfold gives src the reflected velocity of dst.
+template <int dim>
+void fold_pair(Grid<dim>& g, size_t src, size_t dst, int axis) {
+  if (g.mass[src] <= 0) return;
+  Vec<dim> mv = g.momentum[src];
+  mv[axis] = -mv[axis];
+  g.mass[dst] += g.mass[src];
+  g.momentum[dst] += mv;
+}
+template <int dim>
+void unfold_pair(Grid<dim>& g, size_t src, size_t dst, int axis) {
+  Vec<dim> v = g.momentum[dst];
+  v[axis] = -v[axis];
+  g.momentum[src] = v;
 }
 
 // The faces of the domain box: a node on or beyond face (axis, side) is in the wall.
@@ -58,20 +76,10 @@ class Walls final : public Boundary<dim> {
     }
   }
   void fold_ghosts(Grid<dim>& g) const override {
-    for_each_mirror_pair(g, false, [&](size_t s, size_t d, int a) {
-      if (g.mass[s] <= 0) return;
-      Vec<dim> mv = g.momentum[s];
-      mv[a] = -mv[a];
-      g.mass[d] += g.mass[s];
-      g.momentum[d] += mv;
-    });
+    for_each_mirror_pair(g, false, [&](size_t s, size_t d, int a) { fold_pair(g, s, d, a); });
   }
   void unfold_ghosts(Grid<dim>& g) const override {
-    for_each_mirror_pair(g, true, [&](size_t s, size_t d, int a) {
-      Vec<dim> v = g.momentum[d];
-      v[a] = -v[a];
-      g.momentum[s] = v;
-    });
+    for_each_mirror_pair(g, true, [&](size_t s, size_t d, int a) { unfold_pair(g, s, d, a); });
   }
   void keep_inside(Vec<dim>& x) const override {
     for (int a = 0; a < dim; ++a) {
@@ -110,10 +118,16 @@ class HalfPlane final : public Boundary<dim> {
 template <int dim>
 class BoxObstacle final : public Boundary<dim> {
  public:
-  explicit BoxObstacle(const BoundarySpec& s)
-      : Boundary<dim>(s.condition, s.friction), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
+  BoxObstacle(const BoundarySpec& s, const Vec<dim>& domain_size)
+      : Boundary<dim>(s.condition, s.friction), domain_(domain_size), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
         final_velocity_(s.velocity.empty() ? Vec<dim>::Zero().eval() : to_vec<dim>(s.velocity)), ramp_(s.ramp_time),
-        velocity_(ramp_ > 0 ? Vec<dim>::Zero().eval() : final_velocity_), min_(min0_), max_(max0_) {}
+        velocity_(ramp_ > 0 ? Vec<dim>::Zero().eval() : final_velocity_), min_(min0_), max_(max0_) {
+    // A face on or beyond the domain boundary has no material side: it is not a face of the obstacle.
+    for (int a = 0; a < dim; ++a) {
+      open_[a][0] = min0_[a] > Real(1e-9) * domain_[a];
+      open_[a][1] = max0_[a] < domain_[a] * (Real(1) - Real(1e-9));
+    }
+  }
   void move_to(double t) override {
     const double d = t < ramp_ ? t * t / (2 * ramp_) : t - ramp_ / 2;
     velocity_ = static_cast<Real>(t < ramp_ ? t / ramp_ : 1.0) * final_velocity_;
@@ -139,10 +153,81 @@ class BoxObstacle final : public Boundary<dim> {
     v = relative + velocity_;
   }
 
+  // Mirror symmetry at the faces of a static slip box that lie on grid planes, as for slip domain walls:
+  // each node inside the box at depth k = 1, 2 cells below exactly one nearest face is the image of the node
+  // at height k outside it. fold_ghosts adds its mass and reflected momentum to that node; unfold_ghosts
+  // gives it the reflected velocity of that node.
+  void fold_ghosts(Grid<dim>& g) const override {
+    for (const auto& [src, dst, a] : mirror_pairs(g)) fold_pair(g, src, dst, a);
+  }
+  void unfold_ghosts(Grid<dim>& g) const override {
+    for (const auto& [src, dst, a] : mirror_pairs(g)) unfold_pair(g, src, dst, a);
+  }
+  // A particle that advected into a static slip box is put back on its nearest open face (see Walls).
+  void keep_inside(Vec<dim>& x) const override {
+    if (!mirrored()) return;
+    int axis = -1, side = 0;
+    Real best = std::numeric_limits<Real>::max();
+    for (int a = 0; a < dim; ++a) {
+      const Real lo = x[a] - min_[a], hi = max_[a] - x[a];
+      if (!(lo > 0 && hi > 0)) return;
+      if (open_[a][0] && lo < best) best = lo, axis = a, side = 0;
+      if (open_[a][1] && hi < best) best = hi, axis = a, side = 1;
+    }
+    if (axis >= 0) x[axis] = side ? max_[axis] : min_[axis];
+  }
+
  private:
-  Vec<dim> min0_, max0_, final_velocity_;
+  struct MirrorPair {
+    size_t src, dst;
+    int axis;
+  };
+  bool mirrored() const { return this->condition_ == BoundaryCondition::Slip && final_velocity_.isZero(); }
+
+  // The (ghost, mirror) node pairs for grid g, computed once (the box is static).
+  const std::vector<MirrorPair>& mirror_pairs(const Grid<dim>& g) const {
+    if (pairs_ready_) return pairs_;
+    pairs_ready_ = true;
+    if (!mirrored()) return pairs_;
+    IVec<dim> lo, hi;  // node indices of the box faces; a face off the grid planes gets no mirror
+    std::array<std::array<bool, 2>, 3> on_grid{};
+    for (int a = 0; a < dim; ++a) {
+      const Real l = min_[a] * g.inv_dx, h = max_[a] * g.inv_dx;
+      lo[a] = static_cast<int>(std::lround(l));
+      hi[a] = static_cast<int>(std::lround(h));
+      on_grid[a][0] = std::abs(l - Real(lo[a])) < Real(1e-6) * std::max(Real(1), std::abs(l));
+      on_grid[a][1] = std::abs(h - Real(hi[a])) < Real(1e-6) * std::max(Real(1), std::abs(h));
+    }
+    for (size_t k = 0; k < g.node_count(); ++k) {
+      const IVec<dim> i = g.node(k);
+      int depth = std::numeric_limits<int>::max(), count = 0, axis = 0, side = 0;
+      bool inside = true;
+      for (int a = 0; a < dim && inside; ++a) {
+        // Through a face on the domain boundary the box continues into the wall's ghost layers, so that
+        // the nodes on and beyond that boundary are mirrored too (the corner of an obstacle and a wall).
+        inside = (!open_[a][0] || i[a] > lo[a]) && (!open_[a][1] || i[a] < hi[a]);
+        for (int sd = 0; sd < 2 && inside; ++sd) {
+          if (!open_[a][sd]) continue;
+          const int d = sd ? hi[a] - i[a] : i[a] - lo[a];
+          if (d < depth) depth = d, count = 1, axis = a, side = sd;
+          else if (d == depth) ++count;
+        }
+      }
+      if (!inside || count != 1 || depth > 2 || !on_grid[axis][side]) continue;
+      IVec<dim> j = i;
+      j[axis] = side ? 2 * hi[axis] - i[axis] : 2 * lo[axis] - i[axis];
+      if (j[axis] < -Grid<dim>::ghost || j[axis] + Grid<dim>::ghost >= g.n_nodes[axis]) continue;
+      pairs_.push_back({k, g.index(j), axis});
+    }
+    return pairs_;
+  }
+
+  Vec<dim> domain_, min0_, max0_, final_velocity_;
   double ramp_;
   Vec<dim> velocity_, min_, max_;
+  std::array<std::array<bool, 2>, 3> open_{};
+  mutable std::vector<MirrorPair> pairs_;
+  mutable bool pairs_ready_ = false;
 };
 
 // 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
@@ -198,7 +283,7 @@ template <int dim>
 std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& s, const Vec<dim>& domain_size) {
   if (s.type == "walls") return std::make_unique<Walls<dim>>(s, domain_size);
   if (s.type == "half_plane") return std::make_unique<HalfPlane<dim>>(s);
-  if (s.type == "box") return std::make_unique<BoxObstacle<dim>>(s);
+  if (s.type == "box") return std::make_unique<BoxObstacle<dim>>(s, domain_size);
   if (s.type == "bathymetry") {
     if constexpr (dim == 2) return std::make_unique<Bathymetry2D>(s);
     else return std::make_unique<HeightField3D>(s);

@@ -21,6 +21,9 @@
 // shrink with dx. After the grid update, each ghost node takes its mirror node's velocity, reflected, so
 // that g2p reads the same symmetric field: folding without unfolding makes the two transfers non-adjoint,
 // and the scheme injects energy (a dam break blows up).
+// The same mirror applies at the faces of static slip box obstacles that lie on grid planes (faces on the
+// domain boundary excepted; there the box continues into the wall's ghost layers so the corner of a box
+// and a wall is mirrored consistently). Ghosts are unfolded in the reverse order of folding.
 // After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
 // there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
 // needs every particle on the material side of the wall.

@@ -169,7 +169,9 @@ void Simulation<dim>::step(Real dt) {
   for (const auto& b : boundaries) b->fold_ghosts(grid);
   for (const auto& b : boundaries) b->move_to(time);
   grid_update(grid, gravity, dt, boundaries);
-  for (const auto& b : boundaries) b->unfold_ghosts(grid);
+  // Unfold in the reverse order of folding (the adjoint), so a ghost that is folded twice, e.g. at the corner
+  // of a wall and an obstacle, reads its mirror after that mirror has itself been unfolded.
+  for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(grid);
   g2p(particles, grid);
   constitutive_update(particles, materials, dt);
   if (!boundaries.empty()) {
