@@ -17,6 +17,13 @@ Vec<dim> to_vec(const std::vector<double>& a) {
   return v;
 }
 
+// The grid-plane index nearest to coordinate/dx `cells`, and whether the coordinate lies on that plane (to a
+// relative 1e-6): the mirror treatment needs faces on grid planes.
+inline bool on_grid_plane(Real cells, int& index) {
+  index = static_cast<int>(std::lround(cells));
+  return std::abs(cells - Real(index)) <= Real(1e-6) * std::max(Real(1), std::abs(cells));
+}
+
 // Mirror symmetry across a plane normal to `axis` (boundary.h): fold adds ghost node src's mass and
 // reflected momentum to its mirror node dst; unfold gives src the reflected velocity of dst.
 template <int dim>
@@ -56,11 +63,11 @@ class Walls final : public Boundary<dim> {
       size_t stride = 1, outer = 1;
       for (int b = a + 1; b < dim; ++b) stride *= g.n_nodes[b];
       for (int b = 0; b < a; ++b) outer *= g.n_nodes[b];
-      const Real cells = size_[a] * g.inv_dx;
-      const int top = static_cast<int>(std::lround(cells));
+      int top = 0;
+      const bool top_on_grid = on_grid_plane(size_[a] * g.inv_dx, top);
       for (int side = 0; side < 2; ++side) {
         if (!on_[a][side]) continue;
-        if (side == 1 && std::abs(cells - Real(top)) > Real(1e-6) * std::max(Real(1), cells)) continue;
+        if (side == 1 && !top_on_grid) continue;
         const int face = side ? top : 0, out = side ? 1 : -1;
         for (int k = 1; k <= Grid<dim>::ghost; ++k) {
           const int src = face + out * k + Grid<dim>::ghost, dst = face - out * k + Grid<dim>::ghost;
@@ -119,13 +126,13 @@ template <int dim>
 class BoxObstacle final : public Boundary<dim> {
  public:
   BoxObstacle(const BoundarySpec& s, const Vec<dim>& domain_size)
-      : Boundary<dim>(s.condition, s.friction), domain_(domain_size), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
+      : Boundary<dim>(s.condition, s.friction), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
         final_velocity_(s.velocity.empty() ? Vec<dim>::Zero().eval() : to_vec<dim>(s.velocity)), ramp_(s.ramp_time),
         velocity_(ramp_ > 0 ? Vec<dim>::Zero().eval() : final_velocity_), min_(min0_), max_(max0_) {
     // A face on or beyond the domain boundary has no material side: it is not a face of the obstacle.
     for (int a = 0; a < dim; ++a) {
-      open_[a][0] = min0_[a] > Real(1e-9) * domain_[a];
-      open_[a][1] = max0_[a] < domain_[a] * (Real(1) - Real(1e-9));
+      open_[a][0] = min0_[a] > Real(1e-9) * domain_size[a];
+      open_[a][1] = max0_[a] < domain_size[a] * (Real(1) - Real(1e-9));
     }
   }
   void move_to(double t) override {
@@ -192,11 +199,8 @@ class BoxObstacle final : public Boundary<dim> {
     IVec<dim> lo, hi;  // node indices of the box faces; a face off the grid planes gets no mirror
     std::array<std::array<bool, 2>, 3> on_grid{};
     for (int a = 0; a < dim; ++a) {
-      const Real l = min_[a] * g.inv_dx, h = max_[a] * g.inv_dx;
-      lo[a] = static_cast<int>(std::lround(l));
-      hi[a] = static_cast<int>(std::lround(h));
-      on_grid[a][0] = std::abs(l - Real(lo[a])) < Real(1e-6) * std::max(Real(1), std::abs(l));
-      on_grid[a][1] = std::abs(h - Real(hi[a])) < Real(1e-6) * std::max(Real(1), std::abs(h));
+      on_grid[a][0] = on_grid_plane(min_[a] * g.inv_dx, lo[a]);
+      on_grid[a][1] = on_grid_plane(max_[a] * g.inv_dx, hi[a]);
     }
     for (size_t k = 0; k < g.node_count(); ++k) {
       const IVec<dim> i = g.node(k);
@@ -222,7 +226,7 @@ class BoxObstacle final : public Boundary<dim> {
     return pairs_;
   }
 
-  Vec<dim> domain_, min0_, max0_, final_velocity_;
+  Vec<dim> min0_, max0_, final_velocity_;
   double ramp_;
   Vec<dim> velocity_, min_, max_;
   std::array<std::array<bool, 2>, 3> open_{};

@@ -65,11 +65,11 @@ class Boundary {
   virtual void apply(const Vec<dim>& x, Vec<dim>& v) const = 0;
   // Moves the solid to its position at time t (moving obstacles only).
   virtual void move_to(double) {}
-  // Adds ghost-node mass and momentum to mirror nodes (domain walls only; see above).
+  // Adds ghost-node mass and momentum to mirror nodes (slip walls and static slip boxes; see above).
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).
   virtual void unfold_ghosts(Grid<dim>&) const {}
-  // Keeps a particle position on the material side of the boundary (domain walls only; see above).
+  // Keeps a particle position on the material side of the boundary (walls and static slip boxes; see above).
   virtual void keep_inside(Vec<dim>&) const {}
 
  protected:
