@@ -51,7 +51,6 @@ def main():
     args = ap.parse_args()
     scene = json.load(open(SCENE))
     H = scene["parameters"]["H"]
-    x_edge = 9 * H  # scene parameter x_edge
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for r in args.ratios:
@@ -68,9 +67,10 @@ def main():
         if rc == 0 and first:
             status, L_H, t = "iceberg", first["length"] / H, first["time"]
         else:
-            # No iceberg: report the overhang reached (ice front beyond the bed edge) as a lower bound.
+            # No iceberg: report the overhang reached (ice front beyond the bed edge, where the front starts)
+            # as a lower bound.
             probes = list(csv.DictReader(open(os.path.join(run_dir, "probes.csv"))))
-            overhang = max(float(p["ice_front"]) for p in probes) - x_edge
+            overhang = max(float(p["ice_front"]) for p in probes) - float(probes[0]["ice_front"])
             status = "no_failure" if rc == 0 else f"exit_{rc}"
             L_H, t = overhang / H, summary["sim_time"]
         rows.append({"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,

@@ -92,7 +92,8 @@ class Loader {
 
   Scene load(const json& j) {
     Node root{j, ""};
-    object(root, {"parameters", "name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
+    // "parameters" is not listed: substitute_parameters has resolved and removed it before loading.
+    object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
                   "output"});
     s_.dim = dim_ = integer(required(root, "dim"), {2, 3});
     s_.name = root.has("name") ? string(root["name"]) : std::filesystem::path(file_).stem().string();

@@ -20,9 +20,11 @@ TEST(SlidingBlock, CoarseRunDetectsFirstIceberg) {
   EXPECT_LT(std::abs(s["mass_change"].get<double>()), 1e-12);
   ASSERT_TRUE(s.contains("first_iceberg") && s["first_iceberg"].is_object()) << s.dump(2);
   const auto& b = s["first_iceberg"];
-  const double H = 100, x_edge = 900;
+  const double H = 100;  // scenes/sliding_block_2d.json parameters.H
   // The berg broke off the overhang: it lies beyond the bed edge and is no longer than the overhang then.
+  // The slab's front starts at the bed edge, so the edge is the front at t = 0.
   const auto probes = read_probes(dir / "out/probes.csv");
+  const double x_edge = probes.at("ice_front").front();
   double overhang = 0;
   for (size_t i = 0; i < probes.at("time").size(); ++i)
     if (probes.at("time")[i] <= b["time"].get<double>()) overhang = probes.at("ice_front")[i] - x_edge;
