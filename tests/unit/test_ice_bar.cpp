@@ -1,8 +1,8 @@
 // test_ice_bar.cpp - uniaxial tension and compression of a small 2D ice bar, run through the whole MPM
 // engine (p2g, grid update, g2p, split Neo-Hookean + Cohesive Cam Clay update).
 //
-// Loading without grips: the bar (4 m x 0.25 m, no gravity, plane strain) starts with the affine velocity
-// field of homogeneous uniaxial stress, v = G (x - c), G = diag(e', -nu/(1 - nu) e') (the lateral rate that
+// Loading without grips: the bar (scenes/ice_bar_2d.json: 4 m x 0.25 m, no gravity, plane strain) starts
+// with the affine velocity field of homogeneous uniaxial stress, v = G (x - c), G = diag(e', -nu/(1 - nu) e') (the lateral rate that
 // keeps sigma_yy = 0 in plane strain), and APIC C = G. In the interior the stress stays uniform, so div
 // sigma = 0 and the velocity field does not change: the strain grows as e' t exactly like a material-point
 // test, until the release waves from the free ends (speed c_p = sqrt((kappa + mu) / rho)) reach the
@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
+#include <string>
 
 #include "material/stress.h"
 #include "scene/scene_loader.h"
@@ -28,27 +30,32 @@
 namespace cdmpm {
 namespace {
 
-constexpr double kE = 1e8, kNu = 0.3, kRho = 917, kSigmaT = 1e5;
-constexpr double kCentre = 2.5;
+// The bar is scenes/ice_bar_2d.json: a 4 m x 0.25 m bar centred at x = parameters.centre whose initial
+// velocity gradient is diag(strain_rate, -nu/(1 - nu) strain_rate). Material constants come from the scene.
+std::string set(const std::string& key, double value) {
+  std::ostringstream os;
+  os.precision(17);
+  os << key << '=' << value;
+  return os.str();
+}
 
 Scene bar_scene(double strain_rate, double end) {
-  const double lateral = -kNu / (1 - kNu) * strain_rate;
-  nlohmann::json j = {
-      {"dim", 2},
-      {"domain", {{"size", {5.0, 1.0}}, {"dx", 0.025}}},
-      {"time", {{"end", end}, {"frame_interval", end}}},
-      {"gravity", {0.0, 0.0}},
-      {"materials",
-       {{"ice",
-         {{"type", "ice"}, {"density", kRho}, {"youngs_modulus", kE}, {"poissons_ratio", kNu}, {"M", 1.85},
-          {"beta", 0.3}, {"xi", 1.0}, {"tensile_strength", kSigmaT}}}}},
-      {"bodies",
-       {{{"material", "ice"},
-         {"particles_per_cell", 4},
-         {"shape", {{"type", "box"}, {"min", {kCentre - 2, 0.375}}, {"max", {kCentre + 2, 0.625}}}},
-         {"velocity_gradient", {{strain_rate, 0.0}, {0.0, lateral}}}}}},
-      {"output", {{"frames", false}}}};
-  return scene_from_json(j, "ice_bar.json");
+  return load_scene(std::string(CDMPM_SOURCE_DIR) + "/scenes/ice_bar_2d.json",
+                    {set("parameters.strain_rate", strain_rate), set("parameters.end", end), "output.frames=false"});
+}
+
+struct Bar {
+  double E, nu, rho, sigma_t, centre;
+};
+const Bar& bar() {
+  static const Bar b = [] {
+    const Scene s = bar_scene(1, 1);
+    const MaterialSpec& ice = s.materials.at(0);
+    return Bar{ice.youngs_modulus, ice.poissons_ratio, ice.density,
+               s.json.at("materials").at("ice").at("tensile_strength").get<double>(),
+               s.json.at("parameters").at("centre").get<double>()};
+  }();
+  return b;
 }
 
 struct Curve {
@@ -67,7 +74,7 @@ Curve run_bar(double strain_rate, double end) {
     sim.step(std::min<Real>(sim.stable_dt(), static_cast<Real>(end - sim.time)));
     double s = 0, vol = 0;
     for (size_t q = 0; q < sim.particles.size(); ++q) {
-      if (std::abs(sim.particles.x[q][0] - kCentre) > 0.5) continue;
+      if (std::abs(sim.particles.x[q][0] - bar().centre) > 0.5) continue;
       const double V = sim.particles.volume0[q];
       s += V * kirchhoff_stress(m, sim.particles, q)(0, 0);
       vol += V;
@@ -81,8 +88,8 @@ Curve run_bar(double strain_rate, double end) {
 
 // Loading time budget: the release waves reach the middle section at 1.5 m / c_p.
 double release_time() {
-  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(kE, kNu, 2);
-  return 1.5 / std::sqrt(e.p_wave_modulus<2>() / kRho);
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(bar().E, bar().nu, 2);
+  return 1.5 / std::sqrt(e.p_wave_modulus<2>() / bar().rho);
 }
 
 TEST(IceBar, TensilePeakMatchesYieldSurfaceAndSoftens) {
@@ -91,10 +98,10 @@ TEST(IceBar, TensilePeakMatchesYieldSurfaceAndSoftens) {
   const IceModel& ice = sim.materials[0].ice;
   const double predicted = ice.plastic.uniaxial_strength<2>(ice.p0_initial, true);
   // tensile_strength -> p0 -> strength round trip: a few roundings of Real.
-  ASSERT_NEAR(predicted, kSigmaT, 64 * std::numeric_limits<Real>::epsilon() * kSigmaT);
+  ASSERT_NEAR(predicted, bar().sigma_t, 64 * std::numeric_limits<Real>::epsilon() * bar().sigma_t);
 
   // Uniaxial plane-strain stiffness E' = E / (1 - nu^2): the peak strain is sigma_t / E'.
-  const double peak_strain = kSigmaT * (1 - kNu * kNu) / kE;
+  const double peak_strain = bar().sigma_t * (1 - bar().nu * bar().nu) / bar().E;
   const double rate = peak_strain / (0.25 * release_time());
   const Curve c = run_bar(rate, 0.9 * release_time());
   std::printf("tension: peak %.5g Pa, yield surface %.5g Pa, final %.4g Pa\n", c.peak, predicted, c.final_stress);
@@ -108,15 +115,15 @@ TEST(IceBar, CompressiveStrengthExceedsTensile) {
   Simulation<2> sim(scene);
   const IceModel& ice = sim.materials[0].ice;
   const double sigma_c = ice.plastic.uniaxial_strength<2>(ice.p0_initial, false);
-  ASSERT_GT(sigma_c, kSigmaT);
-  const double yield_strain = sigma_c * (1 - kNu * kNu) / kE;
+  ASSERT_GT(sigma_c, bar().sigma_t);
+  const double yield_strain = sigma_c * (1 - bar().nu * bar().nu) / bar().E;
   const double rate = yield_strain / (0.25 * release_time());
   const Curve c = run_bar(-rate, 0.9 * release_time());
   // First yield in compression is the yield-surface compressive strength; compression hardens, so the
   // largest stress reached is at least that (within the same 5 %), and well above the tensile strength.
   std::printf("compression: largest %.5g Pa, yield surface %.5g Pa\n", c.peak, sigma_c);
   EXPECT_GT(c.peak, 0.95 * sigma_c);
-  EXPECT_GT(c.peak, 1.5 * kSigmaT);
+  EXPECT_GT(c.peak, 1.5 * bar().sigma_t);
 }
 
 }  // namespace
