@@ -6,5 +6,6 @@ cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target cdmpm
-./build/cdmpm run scenes/dam_break_2d.json --out output/dam_break_2d "$@"
-echo "Open output/dam_break_2d/particles.pvd in ParaView; probes are in output/dam_break_2d/probes.csv."
+./build/cdmpm run scenes/calving_front_2d.json --out output/calving_front_2d "$@"
+echo "Open output/calving_front_2d/particles.pvd in ParaView (colour the ice by damage); the wave gauges are in"
+echo "output/calving_front_2d/probes.csv, the icebergs in icebergs.csv and the first one in summary.json."

@@ -7,11 +7,13 @@ paper (issue 3):
 sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) measures that the MPM
 ice reaches it in uniaxial tension (peak within 5 %).
 
-    /usr/bin/python3 tools/sweep_sliding_block.py [--cells-per-H 16] [--ratios 0 0.2 ...] [--out DIR]
+    /usr/bin/python3 tools/sweep_sliding_block.py [--cells-per-H 16] [--ratios 0 0.2 ...] [--out DIR] [--jobs 2]
 Writes DIR/sliding_block_sweep.csv and DIR/sliding_block_sweep.png; each run's outputs are in DIR/D_<ratio>/.
 A run with no iceberg before the scene's end time reports the overhang it reached (L/H larger than that).
+The default ratios include neutral buoyancy, D/H = rho_i/rho_w, where the overhang carries no net load.
 """
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
@@ -44,16 +46,20 @@ def models(scene, ratio):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cells-per-H", type=int, default=16)
-    ap.add_argument("--ratios", type=float, nargs="*", default=[0, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 1.0])
+    ap.add_argument("--ratios", type=float, nargs="*",
+                    help="D/H values (default: 0 0.2 0.4 0.6 0.8 0.9 rho_i/rho_w 0.95 1.0, neutral buoyancy included)")
     ap.add_argument("--out", default="out/sliding_block_sweep")
     ap.add_argument("--cdmpm", default=os.path.join(ROOT, "build", "cdmpm"))
     ap.add_argument("--threads", type=int, default=0)
+    ap.add_argument("--jobs", type=int, default=1, help="cases run at once (e.g. 2 on 2 cores)")
     args = ap.parse_args()
     scene = json.load(open(SCENE))
     H = scene["parameters"]["H"]
+    if args.ratios is None:
+        neutral = scene["materials"]["ice"]["density"] / scene["materials"]["water"]["density"]
+        args.ratios = [0, 0.2, 0.4, 0.6, 0.8, 0.9, round(neutral, 4), 0.95, 1.0]
     os.makedirs(args.out, exist_ok=True)
-    rows = []
-    for r in args.ratios:
+    def run(r):
         run_dir = os.path.join(args.out, f"D_{r:g}")
         cmd = [args.cdmpm, "run", SCENE, "--out", run_dir, "--quiet", "--set", f"parameters.D_over_H={r}",
                "--set", f"parameters.cells_per_H={args.cells_per_H}", "--set", "output.frames=false"]
@@ -73,10 +79,17 @@ def main():
             overhang = max(float(p["ice_front"]) for p in probes) - float(probes[0]["ice_front"])
             status = "no_failure" if rc == 0 else f"exit_{rc}"
             L_H, t = overhang / H, summary["sim_time"]
-        rows.append({"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
-                     "model_cantilever": cantilever, "wall_time": summary["wall_time"]})
         print(f"D/H = {r:g}: {status}, L/H = {L_H:.3f} (linear model {linear:.3f}, cantilever {cantilever:.3f}),"
               f" t = {t:.1f} s, wall {summary['wall_time']:.0f} s", flush=True)
+        return {"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
+                "model_cantilever": cantilever, "wall_time": summary["wall_time"]}
+
+    # --jobs runs that many cases at once (each with --threads 1 unless --threads is given): on 2 cores,
+    # two single-threaded runs use the machine better than one two-threaded run at a time.
+    if args.jobs > 1 and not args.threads:
+        args.threads = 1
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        rows = sorted(pool.map(run, args.ratios), key=lambda row: row["D_over_H"])
     path = os.path.join(args.out, "sliding_block_sweep.csv")
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))

@@ -45,7 +45,7 @@ struct Particles {
   // Reorders all arrays so that new particle k is old particle order[k].
   void permute(const std::vector<uint32_t>& order) {
     for_each_array([&](auto& a) {
-      std::remove_reference_t<decltype(a)> out(a.size());
+      std::remove_reference_t<decltype(a)> out(order.size());
 #pragma omp parallel for schedule(static)
       for (size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
       a.swap(out);

@@ -87,6 +87,16 @@ struct BoundarySpec {
   std::vector<std::vector<double>> heights;
 };
 
+// A sink (an outlet): particles of `material` (all materials if empty) whose position is inside the box
+// [min, max] at the end of a step are removed from the simulation. A sink along the top of a far part of a
+// basin holds the water there at the sink's lower edge, like a spillway of unlimited capacity, so that a
+// body pushed into a closed 2D basin does not raise its level.
+struct SinkSpec {
+  std::vector<double> min, max;
+  std::string material;
+  int material_index = -1;  // resolved, -1 = all
+};
+
 struct ProbeSpec {
   std::string name;
   // "wave_gauge", "front", "pressure", "kinetic_energy", "gravitational_energy", "elastic_energy",
@@ -121,6 +131,7 @@ struct Scene {
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;
+  std::vector<SinkSpec> sinks;
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   nlohmann::json json;          // the scene as read, with --set overrides applied

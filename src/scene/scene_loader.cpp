@@ -93,8 +93,8 @@ class Loader {
   Scene load(const json& j) {
     Node root{j, ""};
     // "parameters" is not listed: substitute_parameters has resolved and removed it before loading.
-    object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "probes",
-                  "output"});
+    object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "sinks",
+                  "probes", "output"});
     s_.dim = dim_ = integer(required(root, "dim"), {2, 3});
     s_.name = root.has("name") ? string(root["name"]) : std::filesystem::path(file_).stem().string();
     if (s_.name.empty()) expected(root["name"], "a non-empty string");
@@ -108,6 +108,10 @@ class Loader {
     if (root.has("boundaries")) {
       Node bs = root["boundaries"];
       for (size_t i = 0, n = array(bs, 0, "an array of boundaries"); i < n; ++i) boundary(bs[i]);
+    }
+    if (root.has("sinks")) {
+      Node ss = root["sinks"];
+      for (size_t i = 0, n = array(ss, 0, "an array of sinks"); i < n; ++i) sink(ss[i]);
     }
     probes(root);
     if (root.has("output")) {
@@ -417,6 +421,16 @@ class Loader {
       for (size_t r = 0; r < rows; ++r) spec.heights.push_back(numbers(heights[r], cols));
     }
     s_.boundaries.push_back(std::move(spec));
+  }
+
+  void sink(const Node& n) {
+    if (!n.j.is_object()) expected(n, "an object");
+    object(n, {"min", "max", "material"});
+    SinkSpec spec;
+    min_max(n, spec.min, spec.max);
+    inside(n, spec.min, spec.max, "a sink");
+    if (n.has("material")) spec.material_index = material_ref(n["material"]), spec.material = string(n["material"]);
+    s_.sinks.push_back(std::move(spec));
   }
 
   void probes(const Node& root) {

@@ -147,16 +147,15 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
 
   RunResult result{"completed", "", 0};
   const double t_begin = sim.time;
-  const long long steps_begin = sim.steps;
-  const size_t n = sim.particles.size();
+  double particle_steps = 0;  // sum over steps of the particle count (sinks may remove particles)
   auto last_progress = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
   const bool tty = isatty(fileno(stderr));
   auto progress_line = [&](bool final) {
-    const double wall = elapsed(), rate = (sim.steps - steps_begin) * double(n) / std::max(wall, 1e-9);
+    const double wall = elapsed(), rate = particle_steps / std::max(wall, 1e-9);
     const double left = (end - sim.time) / std::max(sim.time - t_begin, 1e-300) * wall;
     std::fprintf(stderr, "%sstep %lld  t = %.5g / %.5g s  dt = %.3e s  particles %zu  %.3g particle-steps/s  left %s%s",
-                 tty ? "\r" : "", sim.steps, sim.time, end, static_cast<double>(sim.stable_dt()), n, rate,
+                 tty ? "\r" : "", sim.steps, sim.time, end, static_cast<double>(sim.stable_dt()), sim.particles.size(), rate,
                  format_duration(left).c_str(), final || !tty ? "\n" : "   ");
   };
 
@@ -174,6 +173,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     const double target = std::min(next_frame, next_probe);
     const bool hit = sim.time + dt >= target;
     if (hit) dt = static_cast<Real>(target - sim.time);
+    particle_steps += double(sim.particles.size());
     sim.step(dt);
     if (hit) sim.time = target;
     if (auto bad = sim.check_state()) {
@@ -215,11 +215,11 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   s["scene"] = scene.name;
   s["scene_file"] = scene.path;
   s["dim"] = dim;
-  s["particles"] = n;
+  s["particles"] = sim.particles.size();
   s["steps"] = sim.steps;
   s["sim_time"] = sim.time;
   s["wall_time"] = wall;
-  s["particle_steps_per_second"] = (sim.steps - steps_begin) * double(n) / std::max(wall, 1e-9);
+  s["particle_steps_per_second"] = particle_steps / std::max(wall, 1e-9);
   s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
   s["energy"] = {{"kinetic", e1.kinetic}, {"gravitational", e1.gravitational}, {"elastic", e1.elastic}, {"total", e1.total()}};
   s["energy_initial"] = {{"kinetic", e0.kinetic}, {"gravitational", e0.gravitational}, {"elastic", e0.elastic}, {"total", e0.total()}};

@@ -180,9 +180,39 @@ void Simulation<dim>::step(Real dt) {
     for (size_t q = 0; q < n; ++q)
       for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
   }
+  remove_sunk_particles();
   update_speeds();
   time += dt;
   ++steps;
+}
+
+// Removes the particles inside a sink (scene.h, SinkSpec), keeping the order of the others, so the result
+// does not depend on the thread count.
+template <int dim>
+void Simulation<dim>::remove_sunk_particles() {
+  if (scene.sinks.empty()) return;
+  const size_t n = particles.size();
+  std::vector<uint8_t> sunk(n, 0);
+  size_t count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (size_t q = 0; q < n; ++q) {
+    for (const auto& s : scene.sinks) {
+      if (s.material_index >= 0 && particles.material[q] != s.material_index) continue;
+      bool in = true;
+      for (int a = 0; a < dim && in; ++a) in = particles.x[q][a] >= s.min[a] && particles.x[q][a] <= s.max[a];
+      if (in) {
+        sunk[q] = 1;
+        ++count;
+        break;
+      }
+    }
+  }
+  if (count == 0) return;
+  std::vector<uint32_t> keep;
+  keep.reserve(n - count);
+  for (size_t q = 0; q < n; ++q)
+    if (!sunk[q]) keep.push_back(static_cast<uint32_t>(q));
+  particles.permute(keep);
 }
 
 template <int dim>

@@ -2,7 +2,7 @@
 //
 // One step (symplectic Euler, Jiang et al. 2016 course notes, sec. 9), data flowing one way:
 //   particles --p2g--> grid --wall folding, grid_update + boundary conditions--> grid --g2p--> particles
-//   --constitutive_update--> particles
+//   --constitutive_update--> particles --sinks--> particles (those inside a sink are removed)
 // The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, viscous limit, max_dt), where c_max is
 // the largest wave speed of any material present (acoustic speed of water in its current state).
 #pragma once
@@ -53,6 +53,7 @@ class Simulation {
   Real viscous_dt_ = 0;
   ParticleBins bins_;
   void seed_body(const BodySpec& body);
+  void remove_sunk_particles();
   void update_speeds();
 };
 
