@@ -1,78 +1,57 @@
-// bench_step.cpp - throughput of full MPM steps on a still block of water (Google Benchmark).
+// bench_step.cpp - throughput of full MPM steps (Google Benchmark), on the scenes of bench_scenes.h.
 //
 // Each iteration is one Simulation<dim>::step(sim.stable_dt()): particle reordering (every 8 steps), binning,
-// p2g with stresses, wall folding, grid update with boundary conditions, g2p, constitutive update and the
-// speed reduction. Scene setup (seeding the particles) is outside the timed loop.
+// p2g with stresses, wall folding, grid update with boundary conditions, g2p, constitutive update (with the
+// Cam Clay return mapping for ice) and the speed reduction. Scene setup (seeding the particles) is outside
+// the timed loop.
 //
-//   water2d/T  2D block of water, 4 particles per cell, slip walls on all faces, T OpenMP threads
-//   water3d/T  3D block of water, 8 particles per cell, slip walls on all faces, T OpenMP threads
-//
-// The block is a square (cube) of side 1 m resting in the corner of a domain about 1.25 times larger, so the
-// domain holds a layer of empty cells above and beside the water. The water is pre-compressed
-// hydrostatically and stays still, so every step costs the same.
+//   water2d/T    2D still block of water, 4 particles per cell             (issue 4 size: 1M particles)
+//   ice2d/T      2D Cam Clay ice block yielding in extension every step    (1M)
+//   water3d/T    3D still block of water, 8 particles per cell             (2M)
+//   ice3d/T      3D Cam Clay ice block yielding in extension every step    (2M)
+//   calving2d/T  2D glacier front (elastic ice) next to a water basin      (1M; the issue names no size)
+// T is the number of OpenMP threads (1 and 2). The scenes are described in bench_scenes.h.
 //
 // Counters:
 //   particle_steps_per_second  particles x steps per second of wall-clock time (the headline number)
 //   particles                  particle count
-//   bytes_per_particle         peak resident memory (VmHWM) / particles
+//   bytes_per_particle         peak resident memory (VmHWM) / particles, grid and buffers included
+//   yielding_fraction          (cases with ice) fraction of the ice particles that yielded (changed alpha)
+//                              in one more step after the timed ones
 //
 // Run (from a build with CDMPM_BUILD_BENCH=ON):
 //   build/bench/cdmpm_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
-//   build/bench/cdmpm_bench --benchmark_filter='water2d/2'          # one case
-//   CDMPM_BENCH_PARTICLES=1000000 build/bench/cdmpm_bench           # bigger blocks
-// The environment variable CDMPM_BENCH_PARTICLES sets the approximate particle count of each case
-// (default 250000; at least 1000). The count is rounded so that the block is a whole number of cells.
+//   build/bench/cdmpm_bench --benchmark_filter='ice2d/2'                    # one case
+//   CDMPM_BENCH_PARTICLES=issue build/bench/cdmpm_bench --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true                             # the issue's sizes (one line)
+//   CDMPM_BENCH_PARTICLES=1000000 build/bench/cdmpm_bench                   # every case at about 1M
+// The environment variable CDMPM_BENCH_PARTICLES sets the approximate particle count of every case (at least
+// 1000), or "issue" for each case's issue-4 size; default 250000. The count is rounded so that the bodies
+// are whole numbers of cells.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 
-#include "scene/scene_loader.h"
+#include "bench_scenes.h"
 #include "sim/simulation.h"
 
 namespace {
 
-long target_particles() {
+// Particle count of a case: CDMPM_BENCH_PARTICLES (a number, or "issue" for `issue_size`), default 250000.
+long target_particles(long issue_size) {
   long n = 250000;
   if (const char* s = std::getenv("CDMPM_BENCH_PARTICLES")) {
     char* end = nullptr;
     const long v = std::strtol(s, &end, 10);
-    if (end != s && *end == '\0' && v >= 1000) n = v;
+    if (std::strcmp(s, "issue") == 0) n = issue_size;
+    else if (end != s && *end == '\0' && v >= 1000) n = v;
   }
   return n;
-}
-
-// The scene json of a still water block with about `particles` particles, validated like a user scene.
-cdmpm::Scene water_block_scene(int dim, long particles) {
-  const int ppc = dim == 2 ? 4 : 8;
-  const double side = 1.0;  // block side [m]
-  const int cells = std::max(4, static_cast<int>(std::lround(std::pow(double(particles) / ppc, 1.0 / dim))));
-  const double dx = side / cells;
-  // A whole number of cells, so the walls lie on grid planes and the mirror folding runs as in real scenes.
-  const double domain_side = std::ceil(1.25 * cells) * dx;
-  std::vector<double> size(dim, domain_side), zero(dim, 0.0), top(dim, side), gravity(dim, 0.0);
-  gravity[dim - 1] = -9.81;
-  nlohmann::json j = {
-      {"name", dim == 2 ? "water2d" : "water3d"},
-      {"dim", dim},
-      {"domain", {{"size", size}, {"dx", dx}}},
-      {"time", {{"end", 1.0}, {"frame_interval", 0.1}}},
-      {"gravity", gravity},
-      {"materials",
-       {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1.0e6}, {"gamma", 7}, {"viscosity", 1.0e-3}}}}},
-      {"bodies",
-       {{{"material", "water"},
-         {"particles_per_cell", ppc},
-         {"shape", {{"type", "box"}, {"min", zero}, {"max", top}}}}}},
-      {"boundaries", {{{"type", "walls"}, {"condition", "slip"}}}},
-      {"output", {{"frames", false}}}};
-  return cdmpm::scene_from_json(j, dim == 2 ? "<water2d>" : "<water3d>");
 }
 
 // Resets the process's peak resident set size (VmHWM) to the current one; ignored where not supported.
@@ -90,11 +69,22 @@ double peak_rss_bytes() {
   return 0;
 }
 
+// Fraction of the solid particles whose hardening variable alpha changes in one step, i.e. that yield.
 template <int dim>
-void bench_water_block(benchmark::State& state) {
+double yielding_fraction(cdmpm::Simulation<dim>& sim) {
+  const std::vector<cdmpm::Real> before = sim.particles.alpha;
+  sim.step(sim.stable_dt());
+  size_t yielded = 0;
+  for (size_t q = 0; q < before.size(); ++q) yielded += sim.particles.alpha[q] != before[q];
+  return double(yielded) / double(before.size());
+}
+
+// One benchmark case: the scene make_scene(particles) stepped at state.range(0) threads.
+template <int dim>
+void bench_case(benchmark::State& state, cdmpm::Scene (*make_scene)(long), long issue_size) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   reset_peak_rss();
-  const cdmpm::Scene scene = water_block_scene(dim, target_particles());
+  const cdmpm::Scene scene = make_scene(target_particles(issue_size));
   auto sim = std::make_unique<cdmpm::Simulation<dim>>(scene);
   const double n = static_cast<double>(sim->particles.size());
 
@@ -107,11 +97,35 @@ void bench_water_block(benchmark::State& state) {
   // Peak RSS since this case started, so it includes the process baseline (executable, libraries, OpenMP
   // runtime, benchmark bookkeeping; a few MB), not only the simulation's particle and grid data.
   state.counters["bytes_per_particle"] = peak_rss_bytes() / n;
+  if (sim->particles.solid_count() > 0) state.counters["yielding_fraction"] = yielding_fraction(*sim);
+}
+
+cdmpm::Scene water2d(long n) { return cdmpm::bench::water_block(2, n); }
+cdmpm::Scene water3d(long n) { return cdmpm::bench::water_block(3, n); }
+cdmpm::Scene ice2d(long n) { return cdmpm::bench::ice_block(2, n); }
+cdmpm::Scene ice3d(long n) { return cdmpm::bench::ice_block(3, n); }
+
+// Registers case `name` at 1 and 2 threads (named name/1, name/2).
+template <int dim>
+void register_case(const char* name, cdmpm::Scene (*make_scene)(long), long issue_size) {
+  benchmark::RegisterBenchmark(name, bench_case<dim>, make_scene, issue_size)
+      ->Arg(1)
+      ->Arg(2)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
 }
 
 }  // namespace
 
-BENCHMARK(bench_water_block<2>)->Name("water2d")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(bench_water_block<3>)->Name("water3d")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  register_case<2>("water2d", water2d, 1000000);
+  register_case<2>("ice2d", ice2d, 1000000);
+  register_case<3>("water3d", water3d, 2000000);
+  register_case<3>("ice3d", ice3d, 2000000);
+  register_case<2>("calving2d", cdmpm::bench::calving_2d, 1000000);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

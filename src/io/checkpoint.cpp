@@ -9,7 +9,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '2'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '3'};
 
 struct Writer {
   std::ofstream& os;
@@ -55,6 +55,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod<int32_t>(dim);
     w.pod<int32_t>(sizeof(Real));
     w.pod<uint64_t>(p.size());
+    w.pod<uint64_t>(p.solid_count());
     w.pod(m.time); w.pod(m.steps); w.pod(m.frame_index); w.pod(m.probe_index); w.pod(m.wave_dt_at_start);
     w.vec(m.still_levels);
     w.pod<uint64_t>(m.frames.size());
@@ -63,6 +64,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod(m.icebergs_csv_bytes);
     w.vec(m.first_iceberg);
     p.for_each_array([&](auto& a) { w.vec(a); });
+    p.for_each_solid_array([&](auto& a) { w.vec(a); });
     if (!os.flush()) throw std::runtime_error(path + ": writing checkpoint failed");
   }
   std::filesystem::rename(tmp, path);
@@ -74,13 +76,18 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   if (!is) throw std::runtime_error(path + ": no checkpoint to resume from");
   Reader r{is, path};
   char magic[8];
-  if (!is.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0) throw std::runtime_error(path + ": not a cdmpm checkpoint of this version (CDMPMCK2)");
+  if (!is.read(magic, 8) || std::memcmp(magic, kMagic, 7) != 0) throw std::runtime_error(path + ": not a cdmpm checkpoint");
+  if (magic[7] != kMagic[7])
+    throw std::runtime_error(path + ": checkpoint format CDMPMCK" + std::string(1, magic[7]) +
+                             " was written by another cdmpm version (this one reads CDMPMCK" + std::string(1, kMagic[7]) +
+                             ", with the ice state stored only for ice particles); rerun the scene without --resume");
   int32_t d = 0, real = 0;
-  uint64_t n = 0;
-  r.pod(d); r.pod(real); r.pod(n);
+  uint64_t n = 0, ns = 0;
+  r.pod(d); r.pod(real); r.pod(n); r.pod(ns);
   if (d != dim) throw std::runtime_error(path + ": checkpoint is " + std::to_string(d) + "D, scene is " + std::to_string(dim) + "D");
   if (real != static_cast<int32_t>(sizeof(Real)))
     throw std::runtime_error(path + ": checkpoint was written with another floating-point precision");
+  if (ns > n) throw std::runtime_error(path + ": checkpoint is corrupt (more solid particles than particles)");
   CheckpointMeta m;
   r.pod(m.time); r.pod(m.steps); r.pod(m.frame_index); r.pod(m.probe_index); r.pod(m.wave_dt_at_start);
   r.vec(m.still_levels);
@@ -91,10 +98,14 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   r.pod(m.probes_csv_bytes);
   r.pod(m.icebergs_csv_bytes);
   r.vec(m.first_iceberg);
-  p.for_each_array([&](auto& a) {
-    r.vec(a);
-    if (a.size() != n) throw std::runtime_error(path + ": checkpoint is corrupt (array sizes differ)");
-  });
+  auto read_arrays_of = [&](uint64_t count) {
+    return [&, count](auto& a) {
+      r.vec(a);
+      if (a.size() != count) throw std::runtime_error(path + ": checkpoint is corrupt (array sizes differ)");
+    };
+  };
+  p.for_each_array(read_arrays_of(n));
+  p.for_each_solid_array(read_arrays_of(ns));
   return m;
 }
 

@@ -1,9 +1,11 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
 //
-// Layout: magic "CDMPMCK2", dim, sizeof(Real), particle count, the run metadata, then every particle
-// array raw (Particles::for_each_array order). Written to a temporary file and renamed, so the previous
-// checkpoint stays valid until the new one is complete. A resumed run continues bit for bit: the grid,
-// particle bins and speeds are all recomputed from the particle state.
+// Layout (format CDMPMCK3): magic "CDMPMCK3", dim, sizeof(Real), particle count, solid particle count,
+// the run metadata, then every per-particle array raw (Particles::for_each_array order), then the solid-only
+// arrays F and alpha (Particles::for_each_solid_array order; the solids are particles 0 .. solid count - 1).
+// CDMPMCK2 (F and alpha for every particle) is refused with a message saying so. Written to a temporary file
+// and renamed, so the previous checkpoint stays valid until the new one is complete. A resumed run
+// continues bit for bit: the grid, particle bins and speeds are all recomputed from the particle state.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +32,8 @@ struct CheckpointMeta {
 
 template <int dim>
 void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& meta);
-// Throws std::runtime_error naming the file if it is missing, truncated or of another dim/precision.
+// Throws std::runtime_error naming the file if it is missing, truncated, of another format version or of
+// another dim/precision.
 template <int dim>
 CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p);
 

@@ -6,6 +6,8 @@
 // Ice additionally (Jiang et al. 2016 course notes, eq. 202; Wolper et al. 2019, sec. 4):
 //   F_trial = (I + dt C_p) F_elastic,   then the Cohesive Cam Clay return mapping projects F_trial onto the
 //   yield surface and updates the hardening variable alpha (material/cohesive_cam_clay.h).
+// F and alpha exist for ice particles only (core/particles.h: solids first), so they are touched in the Ice
+// case only.
 #pragma once
 
 #include <vector>

@@ -4,7 +4,8 @@
 // stress evaluation (in particle-to-grid) dispatch on Material::kind:
 //   Water: weakly compressible fluid (material/weakly_compressible_water.h), state J;
 //   Ice:   split Neo-Hookean elasticity (material/neo_hookean_split.h) with cohesive Cam-Clay plasticity
-//          and softening (material/cohesive_cam_clay.h), state: elastic F and hardening variable alpha.
+//          and softening (material/cohesive_cam_clay.h), state: elastic F and hardening variable alpha
+//          (stored for ice particles only, core/particles.h).
 #pragma once
 
 #include <string>

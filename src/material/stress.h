@@ -2,6 +2,7 @@
 // per-material wave speed and stored energy used by the time step and the energy probes.
 //   Water: tau = -J p(J) I + viscous part (material/weakly_compressible_water.h).
 //   Ice:   tau(F_elastic) of the split Neo-Hookean energy (material/neo_hookean_split.h).
+// Only ice particles have an F (core/particles.h: solids first), so F[q] is read in the Ice cases only.
 #pragma once
 
 #include <algorithm>

@@ -86,7 +86,17 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   CheckpointMeta meta;
   std::ofstream csv, berg_csv;
   if (opt.resume) {
+    const size_t seeded = sim.particles.size(), seeded_solids = sim.particles.solid_count();
     meta = read_checkpoint(ckpt, sim.particles);
+    // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
+    const bool fewer_allowed = !scene.sinks.empty();
+    const bool fits = fewer_allowed ? sim.particles.size() <= seeded && sim.particles.solid_count() <= seeded_solids
+                                    : sim.particles.size() == seeded && sim.particles.solid_count() == seeded_solids;
+    if (!fits)
+      throw std::runtime_error(ckpt + ": checkpoint holds " + std::to_string(sim.particles.size()) + " particles (" +
+                               std::to_string(sim.particles.solid_count()) + " ice), the scene seeds " +
+                               (fewer_allowed ? "at most " : "") + std::to_string(seeded) + " (" +
+                               std::to_string(seeded_solids) + " ice): resume with the scene and --set values of the run that wrote it");
     sim.time = meta.time;
     sim.steps = meta.steps;
     sim.wave_dt_at_start = static_cast<Real>(meta.wave_dt_at_start);

@@ -49,7 +49,10 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
     materials.push_back(m);
   }
   for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(b, domain_size));
-  for (const BodySpec& b : s.bodies) seed_body(b);
+  // Solid bodies first, so that adding their particles is an append (core/particles.h: solids first).
+  for (const bool solids : {true, false})
+    for (const BodySpec& b : s.bodies)
+      if ((materials[b.material_index].kind == MaterialKind::Ice) == solids) seed_body(b);
 
   // Explicit viscous diffusion limit dt <= dx^2 rho / (2 dim mu), scaled by wave_cfl.
   viscous_dt_ = std::numeric_limits<Real>::max();
@@ -120,10 +123,11 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
       const Real V0 = static_cast<Real>(vol) / J;
       const Vec<dim> xp = x.template cast<Real>();
-      particles.add(xp, v0 + G * (xp - centre), mat.density * V0, V0, J, body.material_index,
-                    mat.kind == MaterialKind::Ice ? mat.ice.alpha_initial : Real(0));
-      particles.C.back() = G;
-      particles.F.back() = F;
+      const Vec<dim> vp = v0 + G * (xp - centre);
+      if (mat.kind == MaterialKind::Ice)
+        particles.add_solid(xp, vp, mat.density * V0, V0, J, body.material_index, G, F, mat.ice.alpha_initial);
+      else
+        particles.add_fluid(xp, vp, mat.density * V0, V0, J, body.material_index, G);
     }
     int a = up - 1;
     for (; a >= 0; --a) {

@@ -77,6 +77,8 @@ void expect_same_particles(const std::string& a, const std::string& b) {
   EXPECT_TRUE(same(pa.C, pb.C));
   EXPECT_TRUE(same(pa.J, pb.J));
   EXPECT_TRUE(same(pa.material, pb.material));
+  EXPECT_TRUE(same(pa.F, pb.F));
+  EXPECT_TRUE(same(pa.alpha, pb.alpha));
 }
 
 TEST(Cli, ResumeGivesBitwiseIdenticalState) {
@@ -102,21 +104,24 @@ TEST(Cli, ResumeGivesBitwiseIdenticalState) {
 }
 
 // The same for ice (elastic F, hardening alpha, icebergs.csv, the first-iceberg record in the checkpoint):
-// the coarse sliding block pushed hard enough to break within the run, resumed at half time, and on 1 thread.
+// the coarse sliding block pushed hard enough to break before half time (a block breaks off near the pusher
+// at about 6 s), resumed at half time, and on 1 thread. (At a push of 10 m/s the first break was a fragment
+// at the front just above the debris size, which came at 9 s or not before 30 s depending on rounding-level
+// changes such as the order of the particles in memory.)
 TEST(Cli, IceResumeAndThreadCountGiveBitwiseIdenticalState) {
   TempDir dir;
   const std::string scene = source_path("scenes/sliding_block_2d.json");
   const std::vector<std::string> common = {"--quiet", "--set", "parameters.cells_per_H=8", "--set",
-                                           "parameters.push_speed=10", "--set", "parameters.push_ramp=5", "--set",
+                                           "parameters.push_speed=20", "--set", "parameters.push_ramp=5", "--set",
                                            "output.icebergs.stop_after_first=1000"};
   auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
-  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--threads", "2", "--set", "time.end=24"}));
+  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--threads", "2", "--set", "time.end=16"}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--out", dir / "one", "--threads", "1", "--set", "time.end=24"}));
+  r = run_cdmpm(args({"run", scene, "--out", dir / "one", "--threads", "1", "--set", "time.end=16"}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--out", dir / "half", "--threads", "2", "--set", "time.end=12"}));
+  r = run_cdmpm(args({"run", scene, "--out", dir / "half", "--threads", "2", "--set", "time.end=8"}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--resume", dir / "half", "--threads", "2", "--set", "time.end=24"}));
+  r = run_cdmpm(args({"run", scene, "--resume", dir / "half", "--threads", "2", "--set", "time.end=16"}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "half/checkpoint.bin");
   expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "one/checkpoint.bin");
@@ -126,7 +131,8 @@ TEST(Cli, IceResumeAndThreadCountGiveBitwiseIdenticalState) {
   }
   const auto full = read_json(dir / "full/summary.json");
   EXPECT_EQ(read_json(dir / "half/summary.json")["first_iceberg"], full["first_iceberg"]);
-  EXPECT_TRUE(full["first_iceberg"].is_object()) << "the run should break the slab before t = 24 s";
+  ASSERT_TRUE(full["first_iceberg"].is_object()) << "the run should break the slab before t = 8 s";
+  EXPECT_LT(full["first_iceberg"]["time"].get<double>(), 8) << "the half run's checkpoint should hold the first iceberg";
 }
 
 TEST(Cli, OneAndTwoThreadsGiveBitwiseIdenticalState) {

@@ -30,7 +30,7 @@ struct TransferSetup {
     for (int k = 0; k < n; ++k) {
       Vec<dim> x, v;
       for (int a = 0; a < dim; ++a) { x[a] = Real(u(rng)); v[a] = Real(s(rng)); }
-      p.add(x, v, Real(0.5 + 0.5 * u(rng)), Real(1e-3), Real(1), 0);
+      p.add_fluid(x, v, Real(0.5 + 0.5 * u(rng)), Real(1e-3), Real(1), 0);
       for (int a = 0; a < dim; ++a)
         for (int b = 0; b < dim; ++b) p.C.back()(a, b) = Real(3 * s(rng));
     }

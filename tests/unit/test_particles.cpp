@@ -1,0 +1,112 @@
+// test_particles.cpp - the particle storage (core/particles.h): solids first, F and alpha only for solids,
+// kept so by seeding, reordering and checkpoints; an old-format checkpoint is refused with a clear message.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "cli_helpers.h"
+#include "io/checkpoint.h"
+#include "scene/scene_loader.h"
+#include "sim/simulation.h"
+
+namespace cdmpm {
+namespace {
+
+Mat<2> diag(Real a) { return Vec<2>(a, a).asDiagonal(); }
+
+TEST(Particles, SolidsFirstAndPermuteCarriesTheSolidState) {
+  // Particles are told apart by their mass k; solid k has F = k I and alpha = -k.
+  Particles<2> p;
+  auto fluid = [&](Real k) { p.add_fluid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, 0); };
+  auto solid = [&](Real k) { p.add_solid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, 1, Mat<2>::Zero(), diag(k), -k); };
+  solid(1);
+  fluid(2);
+  solid(3);  // added after a fluid: goes in front of it
+  fluid(4);
+  ASSERT_EQ(p.size(), 4u);
+  ASSERT_EQ(p.solid_count(), 2u);
+  EXPECT_EQ(p.mass, (std::vector<Real>{1, 3, 2, 4}));
+  EXPECT_EQ(p.material, (std::vector<int32_t>{1, 1, 0, 0}));
+
+  // Reversed order: the solids stay in front, in reversed order, and bring their F and alpha.
+  p.permute({3, 2, 1, 0});
+  EXPECT_EQ(p.mass, (std::vector<Real>{3, 1, 4, 2}));
+  EXPECT_EQ(p.material, (std::vector<int32_t>{1, 1, 0, 0}));
+  ASSERT_EQ(p.solid_count(), 2u);
+  for (size_t q = 0; q < p.size(); ++q) EXPECT_EQ(p.x[q], Vec<2>::Constant(p.mass[q]));
+  for (size_t q = 0; q < p.solid_count(); ++q) {
+    EXPECT_EQ(p.F[q], diag(p.mass[q]));
+    EXPECT_EQ(p.alpha[q], -p.mass[q]);
+  }
+}
+
+// Water listed before ice, so the seeding order has to put the ice first.
+Scene mixed_scene() {
+  const nlohmann::json j = {
+      {"name", "mixed"},
+      {"dim", 2},
+      {"domain", {{"size", {1.0, 1.0}}, {"dx", 0.05}}},
+      {"time", {{"end", 1.0}, {"frame_interval", 0.1}}},
+      {"gravity", {0, -9.81}},
+      {"materials",
+       {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1.0e6}}},
+        {"ice", {{"type", "ice"}, {"density", 917}, {"youngs_modulus", 1.0e8}, {"M", 1.85}, {"beta", 0.3}, {"xi", 3},
+                 {"tensile_strength", 1.0e4}}}}},
+      {"bodies",
+       {{{"material", "water"}, {"particles_per_cell", 4}, {"shape", {{"type", "box"}, {"min", {0.5, 0}}, {"max", {1.0, 0.4}}}}},
+        {{"material", "ice"}, {"particles_per_cell", 4}, {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {0.5, 0.5}}}}}}},
+      {"boundaries", {{{"type", "walls"}, {"condition", "slip"}}}},
+      {"output", {{"frames", false}}}};
+  return scene_from_json(j, "<mixed>");
+}
+
+void expect_solids_first(const Simulation<2>& sim) {
+  const auto& P = sim.particles;
+  EXPECT_EQ(P.solid_count(), 400u);  // (0.5 / 0.05)^2 cells, 4 particles each
+  EXPECT_EQ(P.alpha.size(), P.solid_count());
+  for (size_t q = 0; q < P.size(); ++q)
+    ASSERT_EQ(sim.materials[P.material[q]].kind == MaterialKind::Ice, q < P.solid_count()) << "particle " << q;
+}
+
+TEST(Particles, SimulationSeedsSolidsFirstAndReorderingKeepsThem) {
+  const Scene scene = mixed_scene();
+  Simulation<2> sim(scene);
+  EXPECT_EQ(sim.particles.size(), 400u + 320u);
+  expect_solids_first(sim);
+  for (int s = 0; s < 2 * Simulation<2>::reorder_interval + 1; ++s) sim.step(sim.stable_dt());
+  EXPECT_FALSE(sim.check_state());
+  expect_solids_first(sim);
+}
+
+TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
+  const Scene scene = mixed_scene();
+  Simulation<2> sim(scene);
+  for (int s = 0; s < 3; ++s) sim.step(sim.stable_dt());
+  testing::TempDir dir;
+  const std::string path = dir / "checkpoint.bin";
+  write_checkpoint(path, sim.particles, CheckpointMeta{});
+  Particles<2> back;
+  read_checkpoint(path, back);
+  ASSERT_EQ(back.size(), sim.particles.size());
+  ASSERT_EQ(back.solid_count(), sim.particles.solid_count());
+  EXPECT_EQ(std::memcmp(back.F.data(), sim.particles.F.data(), back.F.size() * sizeof(Mat<2>)), 0);
+  EXPECT_EQ(back.alpha, sim.particles.alpha);
+  EXPECT_EQ(back.x, sim.particles.x);
+
+  // A checkpoint of the previous format (F and alpha for every particle) names both formats.
+  std::ofstream(dir / "old.bin", std::ios::binary) << "CDMPMCK2" << std::string(64, '\0');
+  try {
+    read_checkpoint(dir / "old.bin", back);
+    FAIL() << "an old-format checkpoint was read";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("CDMPMCK2"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK3"), std::string::npos) << what;
+    EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace cdmpm
