@@ -89,7 +89,9 @@ def main():
     if args.jobs > 1 and not args.threads:
         args.threads = 1
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        rows = sorted(pool.map(run, args.ratios), key=lambda row: row["D_over_H"])
+        # Highest D/H first: the runs near neutral buoyancy are the long ones (they go on to an overhang of 5H),
+        # and starting them first keeps both jobs busy to the end.
+        rows = sorted(pool.map(run, sorted(args.ratios, reverse=True)), key=lambda row: row["D_over_H"])
     path = os.path.join(args.out, "sliding_block_sweep.csv")
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
