@@ -13,6 +13,7 @@ namespace cdmpm {
 namespace {
 
 constexpr double kDepth = 40, kLength = 100, kSpeed = 0.2, kRamp = 2, kEnd = 30;
+constexpr double kTravel = kSpeed * (kEnd - kRamp / 2);  // piston travel at kEnd: 5.8 m
 
 nlohmann::json pool(bool with_sink) {
   nlohmann::json j = {
@@ -37,13 +38,11 @@ double run_and_measure_level(bool with_sink) {
   while (sim.time < scene.time.end) sim.step(std::min<double>(sim.stable_dt(), scene.time.end - sim.time));
   double volume = 0;
   for (size_t q = 0; q < sim.particles.size(); ++q) volume += sim.particles.volume0[q] * sim.particles.J[q];
-  const double travel = kSpeed * (kEnd - kRamp / 2);
-  return volume / (kLength - 10 - travel);
+  return volume / (kLength - 10 - kTravel);
 }
 
 TEST(Sinks, SpillwayHoldsTheLevelOfAPoolIntoWhichAPistonIsPushed) {
-  const double travel = kSpeed * (kEnd - kRamp / 2);  // 5.8 m
-  const double rise = travel * kDepth / (kLength - 10 - travel);  // closed pool: ~2.8 m
+  const double rise = kTravel * kDepth / (kLength - 10 - kTravel);  // closed pool: ~2.8 m
   const double closed = run_and_measure_level(false);
   const double open = run_and_measure_level(true);
   // Closed pool: volume is conserved (J within 1e-3 of its hydrostatic value), the level rises by `rise`.

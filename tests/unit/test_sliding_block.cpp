@@ -1,5 +1,6 @@
 // test_sliding_block.cpp - the ice scenes end to end, coarse: scenes/sliding_block_2d.json at D/H = 0.4 and
-// H/dx = 12 (at H/dx = 8 the front crumbles into damaged ice before an intact berg forms; the validation sweep is tools/sweep_sliding_block.py). The slab is pushed over the bed edge;
+// H/dx = 12 (at H/dx = 8 the front crumbles into damaged ice before an intact berg forms; the validation
+// sweep is tools/sweep_sliding_block.py). The slab is pushed over the bed edge;
 // the run must detect the first iceberg (a second connected body of intact ice, probe/icebergs.h), report
 // it in summary.json and icebergs.csv, and lose water only through the spillway sink that holds the
 // basin's level.
@@ -9,20 +10,27 @@
 #include <fstream>
 
 #include "cli_helpers.h"
+#include "scene/scene_loader.h"
 
 namespace cdmpm::testing {
 namespace {
 
 TEST(SlidingBlock, CoarseRunDetectsFirstIceberg) {
   TempDir dir;
-  const auto r = run_cdmpm({"run", source_path("scenes/sliding_block_2d.json"), "--out", dir / "out", "--quiet",
-                            "--set", "parameters.D_over_H=0.4", "--set", "parameters.cells_per_H=12"});
+  const std::vector<std::string> sets = {"parameters.D_over_H=0.4", "parameters.cells_per_H=12"};
+  const std::string path = source_path("scenes/sliding_block_2d.json");
+  const auto r = run_cdmpm({"run", path, "--out", dir / "out", "--quiet", "--set", sets[0], "--set", sets[1]});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto s = read_json(dir / "out/summary.json");
   ASSERT_TRUE(s.contains("first_iceberg") && s["first_iceberg"].is_object()) << s.dump(2);
   const auto& b = s["first_iceberg"];
-  const double H = 100, D = 0.4 * H, rho_w = 1000, g = 9.81;  // scenes/sliding_block_2d.json parameters
-  const double U = 2, sink_length = 2 * H;
+  // The scene's values, read from it: slab thickness, water depth, push speed, water density, sink length.
+  const auto json = read_json(path);
+  const double H = json["parameters"]["H"], D = 0.4 * H, U = json["parameters"]["push_speed"], g = 9.81;
+  const double rho_w = json["materials"]["water"]["density"];
+  const Scene scene = load_scene(path, sets);
+  ASSERT_EQ(scene.sinks.size(), 1u);
+  const double sink_length = scene.sinks[0].max[0] - scene.sinks[0].min[0];
   // The berg broke off the overhang. The slab's front starts at the bed edge, so the edge is the front at t = 0.
   const auto probes = read_probes(dir / "out/probes.csv");
   const double x_edge = probes.at("ice_front").front();
@@ -30,7 +38,7 @@ TEST(SlidingBlock, CoarseRunDetectsFirstIceberg) {
   for (size_t i = 0; i < probes.at("time").size(); ++i)
     if (probes.at("time")[i] <= b["time"].get<double>()) overhang = probes.at("ice_front")[i] - x_edge;
   // Mass leaves only through the spillway sink: the water the overhang displaced (overhang x D per metre),
-  // plus at most the crests of the push wave above the sink edge, amplitude U D / sqrt(g (D + z_bed)).
+  // plus at most the crests of the push wave above the sink edge, amplitude U D / sqrt(g (D + z_bed)), z_bed = H.
   const double m0 = probes.at("mass").front(), m1 = probes.at("mass").back();
   const double overhang_end = probes.at("ice_front").back() - x_edge;
   EXPECT_LE(m1, m0 * (1 + 1e-12));
