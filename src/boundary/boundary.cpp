@@ -53,32 +53,26 @@ class Walls final : public Boundary<dim> {
         on_[a][side] = s.faces.empty() || std::find(s.faces.begin(), s.faces.end(), face) != s.faces.end();
       }
   }
-  // Calls f(src, dst, axis) for every ghost node src beyond a slip face and its mirror node dst inside,
+  // Calls f(src, dst, axis) for every active ghost node src beyond a slip face and its mirror node dst inside
+  // (when active: with the material on its side of the wall, the stencil that reaches src also reaches dst),
   // axis by axis (forward or reverse). Faces that do not lie on a grid plane are skipped.
   template <class F>
   void for_each_mirror_pair(const Grid<dim>& g, bool reverse, F&& f) const {
     if (this->condition_ != BoundaryCondition::Slip) return;
     for (int step = 0; step < dim; ++step) {
       const int a = reverse ? dim - 1 - step : step;
-      size_t stride = 1, outer = 1;
-      for (int b = a + 1; b < dim; ++b) stride *= g.n_nodes[b];
-      for (int b = 0; b < a; ++b) outer *= g.n_nodes[b];
       int top = 0;
       const bool top_on_grid = on_grid_plane(size_[a] * g.inv_dx, top);
       for (int side = 0; side < 2; ++side) {
         if (!on_[a][side]) continue;
         if (side == 1 && !top_on_grid) continue;
         const int face = side ? top : 0, out = side ? 1 : -1;
-        for (int k = 1; k <= Grid<dim>::ghost; ++k) {
-          const int src = face + out * k + Grid<dim>::ghost, dst = face - out * k + Grid<dim>::ghost;
-          if (src < 0 || src >= g.n_nodes[a] || dst < 0 || dst >= g.n_nodes[a]) continue;
-#pragma omp parallel for schedule(static) collapse(2)
-          for (size_t o = 0; o < outer; ++o)
-            for (size_t in = 0; in < stride; ++in) {
-              const size_t base = o * g.n_nodes[a] * stride + in;
-              f(base + src * stride, base + dst * stride, a);
-            }
-        }
+        for (int k = 1; k <= Grid<dim>::ghost; ++k)
+          g.for_each_node_on_plane(a, face + out * k, [&](size_t src, IVec<dim> i) {
+            i[a] = face - out * k;
+            const size_t dst = g.find(i);
+            if (dst != Grid<dim>::npos) f(src, dst, a);
+          });
       }
     }
   }
@@ -164,11 +158,12 @@ class BoxObstacle final : public Boundary<dim> {
   // each node inside the box at depth k = 1, 2 cells below exactly one nearest face is the image of the node
   // at height k outside it. fold_ghosts adds its mass and reflected momentum to that node; unfold_ghosts
   // gives it the reflected velocity of that node.
+  // Pairs whose nodes are not both active are skipped (as for Walls).
   void fold_ghosts(Grid<dim>& g) const override {
-    for (const auto& [src, dst, a] : mirror_pairs(g)) fold_pair(g, src, dst, a);
+    for_each_active_pair(g, [&](size_t src, size_t dst, int a) { fold_pair(g, src, dst, a); });
   }
   void unfold_ghosts(Grid<dim>& g) const override {
-    for (const auto& [src, dst, a] : mirror_pairs(g)) unfold_pair(g, src, dst, a);
+    for_each_active_pair(g, [&](size_t src, size_t dst, int a) { unfold_pair(g, src, dst, a); });
   }
   // A particle that advected into a static slip box is put back on its nearest open face (see Walls).
   void keep_inside(Vec<dim>& x) const override {
@@ -186,12 +181,20 @@ class BoxObstacle final : public Boundary<dim> {
 
  private:
   struct MirrorPair {
-    size_t src, dst;
+    IVec<dim> src, dst;  // physical node indices
     int axis;
   };
   bool mirrored() const { return this->condition_ == BoundaryCondition::Slip && final_velocity_.isZero(); }
 
-  // The (ghost, mirror) node pairs for grid g, computed once (the box is static).
+  template <class F>
+  void for_each_active_pair(const Grid<dim>& g, F&& f) const {
+    for (const auto& [src, dst, a] : mirror_pairs(g)) {
+      const size_t s = g.find(src), d = g.find(dst);
+      if (s != Grid<dim>::npos && d != Grid<dim>::npos) f(s, d, a);
+    }
+  }
+  // The (ghost, mirror) node pairs on grid g's lattice, computed once (the box is static) over the nodes
+  // within the ghost depth of the box.
   const std::vector<MirrorPair>& mirror_pairs(const Grid<dim>& g) const {
     if (pairs_ready_) return pairs_;
     pairs_ready_ = true;
@@ -202,28 +205,45 @@ class BoxObstacle final : public Boundary<dim> {
       on_grid[a][0] = on_grid_plane(min_[a] * g.inv_dx, lo[a]);
       on_grid[a][1] = on_grid_plane(max_[a] * g.inv_dx, hi[a]);
     }
-    for (size_t k = 0; k < g.node_count(); ++k) {
-      const IVec<dim> i = g.node(k);
-      int depth = std::numeric_limits<int>::max(), count = 0, axis = 0, side = 0;
-      bool inside = true;
-      for (int a = 0; a < dim && inside; ++a) {
-        // Through a face on the domain boundary the box continues into the wall's ghost layers, so that
-        // the nodes on and beyond that boundary are mirrored too (the corner of an obstacle and a wall).
-        inside = (!open_[a][0] || i[a] > lo[a]) && (!open_[a][1] || i[a] < hi[a]);
-        for (int sd = 0; sd < 2 && inside; ++sd) {
-          if (!open_[a][sd]) continue;
-          const int d = sd ? hi[a] - i[a] : i[a] - lo[a];
-          if (d < depth) depth = d, count = 1, axis = a, side = sd;
-          else if (d == depth) ++count;
-        }
+    IVec<dim> first, last;  // node range to visit: the box and Grid::ghost nodes around it, on the lattice
+    for (int a = 0; a < dim; ++a) {
+      first[a] = std::max(-Grid<dim>::ghost, static_cast<int>(std::floor(min_[a] * g.inv_dx)) - Grid<dim>::ghost);
+      last[a] = std::min(g.n_nodes[a] - 1 - Grid<dim>::ghost, static_cast<int>(std::ceil(max_[a] * g.inv_dx)) + Grid<dim>::ghost);
+      if (first[a] > last[a]) return pairs_;
+    }
+    for (IVec<dim> i = first;;) {
+      visit_node(g, i, lo, hi, on_grid);
+      int a = dim - 1;
+      for (; a >= 0; --a) {
+        if (++i[a] <= last[a]) break;
+        i[a] = first[a];
       }
-      if (!inside || count != 1 || depth > 2 || !on_grid[axis][side]) continue;
-      IVec<dim> j = i;
-      j[axis] = side ? 2 * hi[axis] - i[axis] : 2 * lo[axis] - i[axis];
-      if (j[axis] < -Grid<dim>::ghost || j[axis] + Grid<dim>::ghost >= g.n_nodes[axis]) continue;
-      pairs_.push_back({k, g.index(j), axis});
+      if (a < 0) break;
     }
     return pairs_;
+  }
+  // Adds node i's pair if i is a mirrored ghost of the box: inside it, at depth 1 or 2 below exactly one
+  // nearest open face on a grid plane.
+  void visit_node(const Grid<dim>& g, const IVec<dim>& i, const IVec<dim>& lo, const IVec<dim>& hi,
+                  const std::array<std::array<bool, 2>, 3>& on_grid) const {
+    int depth = std::numeric_limits<int>::max(), count = 0, axis = 0, side = 0;
+    bool inside = true;
+    for (int a = 0; a < dim && inside; ++a) {
+      // Through a face on the domain boundary the box continues into the wall's ghost layers, so that
+      // the nodes on and beyond that boundary are mirrored too (the corner of an obstacle and a wall).
+      inside = (!open_[a][0] || i[a] > lo[a]) && (!open_[a][1] || i[a] < hi[a]);
+      for (int sd = 0; sd < 2 && inside; ++sd) {
+        if (!open_[a][sd]) continue;
+        const int d = sd ? hi[a] - i[a] : i[a] - lo[a];
+        if (d < depth) depth = d, count = 1, axis = a, side = sd;
+        else if (d == depth) ++count;
+      }
+    }
+    if (!inside || count != 1 || depth > 2 || !on_grid[axis][side]) return;
+    IVec<dim> j = i;
+    j[axis] = side ? 2 * hi[axis] - i[axis] : 2 * lo[axis] - i[axis];
+    if (j[axis] < -Grid<dim>::ghost || j[axis] + Grid<dim>::ghost >= g.n_nodes[axis]) return;
+    pairs_.push_back({i, j, axis});
   }
 
   Vec<dim> min0_, max0_, final_velocity_;

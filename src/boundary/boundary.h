@@ -26,7 +26,9 @@
 // and a wall is mirrored consistently). Ghosts are unfolded in the reverse order of folding.
 // After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
 // there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
-// needs every particle on the material side of the wall.
+// needs every particle on the material side of the wall. On the sparse grid (grid/grid.h) a pair is folded
+// only when both its nodes are active; with every particle on the material side, a stencil that reaches a
+// ghost node also reaches its mirror, so no pair with mass is skipped.
 #pragma once
 
 #include <array>

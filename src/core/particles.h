@@ -1,9 +1,10 @@
 // particles.h - material points stored as a structure of arrays, solids first.
 //
 // Each field is its own contiguous array so a phase of the step streams only what it needs. Every particle
-// carries its mass m, reference volume V0 (volume in the unstressed state, so V = J V0), position x,
-// velocity v, APIC affine matrix C (the particle's velocity gradient estimate, Jiang et al. 2015), the
-// total volume ratio J = V / V0 and its material index.
+// carries its mass m, position x, velocity v, APIC affine matrix C (the particle's velocity gradient
+// estimate, Jiang et al. 2015), the total volume ratio J = V / V0 and its material index. The reference
+// (unstressed) volume is not stored: it is V0 = m / rho0 of the particle's material (material/material.h,
+// reference_volume), exactly how seeding sets the mass.
 //
 // Solids (ice) also carry the elastic deformation gradient F and the hardening variable alpha of the
 // plastic model (material/cohesive_cam_clay.h). Only they do: the particles are kept in two runs,
@@ -18,6 +19,7 @@
 // particle's material never changes from solid to fluid or back. Material kind Ice <=> q < solid_count().
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -31,7 +33,7 @@ struct Particles {
   // Every particle.
   std::vector<Vec<dim>> x, v;
   std::vector<Mat<dim>> C;
-  std::vector<Real> mass, volume0, J;
+  std::vector<Real> mass, J;
   std::vector<int32_t> material;
   // Solids only: entry q is the state of particle q < solid_count().
   std::vector<Mat<dim>> F;
@@ -41,16 +43,16 @@ struct Particles {
   size_t solid_count() const { return F.size(); }
 
   // Appends a fluid particle.
-  void add_fluid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real V0, Real Jp, int32_t mat,
+  void add_fluid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, int32_t mat,
                  const Mat<dim>& Cp = Mat<dim>::Zero()) {
-    insert_common(size(), xp, vp, Cp, m, V0, Jp, mat);
+    insert_common(size(), xp, vp, Cp, m, Jp, mat);
   }
 
   // Adds a solid particle with elastic deformation gradient Fe and hardening variable alpha0 after the
   // last solid (an append while no fluid has been added; otherwise every fluid array is shifted).
-  void add_solid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real V0, Real Jp, int32_t mat, const Mat<dim>& Cp,
+  void add_solid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, int32_t mat, const Mat<dim>& Cp,
                  const Mat<dim>& Fe, Real alpha0) {
-    insert_common(solid_count(), xp, vp, Cp, m, V0, Jp, mat);
+    insert_common(solid_count(), xp, vp, Cp, m, Jp, mat);
     F.push_back(Fe);
     alpha.push_back(alpha0);
   }
@@ -59,7 +61,7 @@ struct Particles {
   // reorder, save and load them generically).
   template <class Fn>
   void for_each_array(Fn&& fn) {
-    fn(x); fn(v); fn(C); fn(mass); fn(volume0); fn(J); fn(material);
+    fn(x); fn(v); fn(C); fn(mass); fn(J); fn(material);
   }
   template <class Fn>
   void for_each_solid_array(Fn&& fn) {
@@ -69,8 +71,12 @@ struct Particles {
   // Reorders the particles so that new particle k is old particle order[k], except that the solids are moved
   // (keeping their relative order) in front of the fluids, so any order keeps the solids-first layout.
   // `order` may list a subset: the particles it leaves out are removed (sinks, sim/simulation.cpp).
+  //
+  // A full permutation is applied in place along its cycles, every array by its own thread, so the
+  // reordering holds no copy of any field: it needs the permutation (4 B per particle) and a bit per particle.
+  // A subset in increasing order (removal) is compacted in place; any other subset is gathered into copies.
   void permute(const std::vector<uint32_t>& order) {
-    const size_t ns = solid_count();
+    const size_t ns = solid_count(), n = size();
     std::vector<uint32_t> o;
     o.reserve(order.size());
     for (const uint32_t q : order)
@@ -78,24 +84,76 @@ struct Particles {
     const size_t new_ns = o.size();
     for (const uint32_t q : order)
       if (q >= ns) o.push_back(q);
-    auto gather = [&](auto& a, size_t n) {  // the first n entries of o index into a
-      std::remove_reference_t<decltype(a)> out(n);
+    if (o.size() == n && permute_in_place(o)) return;
+    const bool increasing = std::is_sorted(o.begin(), o.end()) && std::adjacent_find(o.begin(), o.end()) == o.end();
+    auto compact_or_gather = [&](auto& a, size_t m) {  // the first m entries of o index into a
+      if (increasing) {
+        for (size_t k = 0; k < m; ++k) a[k] = a[o[k]];  // o[k] >= k: sources are read before being overwritten
+        a.resize(m);
+        return;
+      }
+      std::remove_reference_t<decltype(a)> out(m);
 #pragma omp parallel for schedule(static)
       for (size_t k = 0; k < out.size(); ++k) out[k] = a[o[k]];
       a.swap(out);
     };
-    for_each_array([&](auto& a) { gather(a, o.size()); });
-    for_each_solid_array([&](auto& a) { gather(a, new_ns); });
+    for_each_array([&](auto& a) { compact_or_gather(a, o.size()); });
+    for_each_solid_array([&](auto& a) { compact_or_gather(a, new_ns); });
   }
 
  private:
-  void insert_common(size_t k, const Vec<dim>& xp, const Vec<dim>& vp, const Mat<dim>& Cp, Real m, Real V0, Real Jp,
+  // Applies the permutation o (new k = old o[k]; a bijection, solids onto solids) to every array in place,
+  // following its cycles from their smallest index. Returns false if o is not a bijection.
+  bool permute_in_place(const std::vector<uint32_t>& o) {
+    const size_t n = o.size();
+    std::vector<bool> seen(n, false);
+    std::vector<uint32_t> leaders;  // smallest index of every cycle longer than one
+    for (size_t s = 0; s < n; ++s) {
+      if (seen[s]) continue;
+      size_t k = s, length = 0;
+      while (!seen[k]) {
+        seen[k] = true;
+        k = o[k];
+        ++length;
+        if (k >= n) return false;
+      }
+      if (k != s) return false;  // entered a cycle elsewhere: o repeats an index
+      if (length > 1) leaders.push_back(static_cast<uint32_t>(s));
+    }
+    // Leaders ascend, so the solids' cycles (within [0, solid_count()), as o maps solids onto solids) come first.
+    const size_t solid_leaders =
+        std::lower_bound(leaders.begin(), leaders.end(), static_cast<uint32_t>(solid_count())) - leaders.begin();
+    auto apply = [&](auto& a) {
+      const size_t count = a.size() == n ? leaders.size() : solid_leaders;
+      for (size_t c = 0; c < count; ++c) {
+        const uint32_t s = leaders[c];
+        auto first = a[s];
+        size_t k = s;
+        for (size_t next = o[k]; next != s; k = next, next = o[k]) a[k] = a[next];
+        a[k] = first;
+      }
+    };
+    // One task per array.
+#pragma omp parallel
+#pragma omp single
+    {
+      auto spawn = [&](auto& a) {
+        auto* array = &a;
+#pragma omp task firstprivate(array)
+        apply(*array);
+      };
+      for_each_array(spawn);
+      for_each_solid_array(spawn);
+    }
+    return true;
+  }
+
+  void insert_common(size_t k, const Vec<dim>& xp, const Vec<dim>& vp, const Mat<dim>& Cp, Real m, Real Jp,
                      int32_t mat) {
     x.insert(x.begin() + k, xp);
     v.insert(v.begin() + k, vp);
     C.insert(C.begin() + k, Cp);
     mass.insert(mass.begin() + k, m);
-    volume0.insert(volume0.begin() + k, V0);
     J.insert(J.begin() + k, Jp);
     material.insert(material.begin() + k, mat);
   }

@@ -15,18 +15,16 @@ namespace cdmpm {
 
 template <int dim>
 void grid_update(Grid<dim>& g, const Vec<dim>& gravity, Real dt, const std::vector<std::unique_ptr<Boundary<dim>>>& bcs) {
-  const size_t n = g.node_count();
-#pragma omp parallel for schedule(static)
-  for (size_t k = 0; k < n; ++k) {
+  g.for_each_node([&](size_t k, const IVec<dim>& i) {
     const Real m = g.mass[k];
-    if (m <= 0) continue;
+    if (m <= 0) return;
     Vec<dim> v = g.momentum[k] / m + dt * gravity;
     if (!bcs.empty()) {
-      const Vec<dim> x = g.position(g.node(k));
+      const Vec<dim> x = g.position(i);
       for (const auto& b : bcs) b->apply(x, v);
     }
     g.momentum[k] = v;
-  }
+  });
 }
 
 }  // namespace cdmpm

@@ -61,6 +61,7 @@
 #include <cmath>
 
 #include "core/types.h"
+#include "math/powers.h"
 #include "math/svd.h"
 #include "material/neo_hookean_split.h"
 
@@ -134,7 +135,7 @@ struct CohesiveCamClay {
       }
 
     const Real J = s.prod();
-    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Real Jm2d = pow_minus_two_over_dim<dim>(J);
     Vec<dim> bhat = (Jm2d * s.array().square()).matrix();  // unimodular stretch, prod = 1
     const Real bmean = bhat.sum() / Real(dim);
     const Vec<dim> bdev = (bhat.array() - bmean).matrix();
@@ -155,7 +156,7 @@ struct CohesiveCamClay {
       const Real J2 = std::max(Real(1) - Real(2) * p_tip / e.kappa, std::pow(min_singular_value, Real(2 * dim)));
       const Real J_new = std::sqrt(J2);
       if (hardening) alpha += std::log(J / J_new);
-      rebuild(Vec<dim>::Constant(std::pow(J_new, Real(1) / Real(dim))));
+      rebuild(Vec<dim>::Constant(root_dim<dim>(J_new)));
       return true;
     }
 
@@ -178,7 +179,7 @@ struct CohesiveCamClay {
       if (!(m_new < m)) break;  // converged to machine precision
       m = m_new;
     }
-    const Real Jd = std::pow(J, Real(1) / Real(dim));
+    const Real Jd = root_dim<dim>(J);
     Vec<dim> s_new;
     for (int i = 0; i < dim; ++i) s_new(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
     if (hardening) {

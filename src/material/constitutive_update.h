@@ -17,20 +17,25 @@
 
 namespace cdmpm {
 
+// Updates particle q's deformation state with its new velocity gradient C_q and advects it.
+template <int dim>
+inline void constitutive_update(Particles<dim>& p, const std::vector<Material>& materials, size_t q, Real dt) {
+  const Material& m = materials[p.material[q]];
+  p.J[q] *= Real(1) + dt * p.C[q].trace();
+  if (m.kind == MaterialKind::Ice) {
+    Mat<dim> F = (Mat<dim>::Identity() + dt * p.C[q]) * p.F[q];
+    if (m.ice.plasticity) m.ice.plastic.return_mapping<dim>(F, p.alpha[q], m.ice.p0(p.alpha[q]), m.ice.elastic);
+    p.F[q] = F;
+  }
+  p.x[q] += dt * p.v[q];
+}
+
+// Every particle.
 template <int dim>
 void constitutive_update(Particles<dim>& p, const std::vector<Material>& materials, Real dt) {
   const size_t n = p.size();
 #pragma omp parallel for schedule(static)
-  for (size_t q = 0; q < n; ++q) {
-    const Material& m = materials[p.material[q]];
-    p.J[q] *= Real(1) + dt * p.C[q].trace();
-    if (m.kind == MaterialKind::Ice) {
-      Mat<dim> F = (Mat<dim>::Identity() + dt * p.C[q]) * p.F[q];
-      if (m.ice.plasticity) m.ice.plastic.return_mapping<dim>(F, p.alpha[q], m.ice.p0(p.alpha[q]), m.ice.elastic);
-      p.F[q] = F;
-    }
-    p.x[q] += dt * p.v[q];
-  }
+  for (size_t q = 0; q < n; ++q) constitutive_update(p, materials, q, dt);
 }
 
 }  // namespace cdmpm

@@ -41,4 +41,7 @@ struct Material {
 
 inline bool is_fluid(const Material& m) { return m.kind == MaterialKind::Water; }
 
+// Reference (unstressed) volume V0 = m / rho0 of a particle of mass m (seeding sets m = rho0 V0).
+inline Real reference_volume(const Material& m, Real mass) { return mass / m.density; }
+
 }  // namespace cdmpm

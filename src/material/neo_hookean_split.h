@@ -32,6 +32,7 @@
 #include <limits>
 
 #include "core/types.h"
+#include "math/powers.h"
 
 namespace cdmpm {
 
@@ -61,7 +62,7 @@ struct NeoHookeanSplit {
   template <int dim>
   Real energy_density(const Mat<dim>& F) const {
     const Real J = F.determinant();
-    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Real Jm2d = pow_minus_two_over_dim<dim>(J);
     return Real(0.5) * mu * (Jm2d * F.squaredNorm() - Real(dim)) +
            Real(0.5) * kappa * (Real(0.5) * (J * J - Real(1)) - std::log(J));
   }
@@ -69,7 +70,7 @@ struct NeoHookeanSplit {
   template <int dim>
   Mat<dim> kirchhoff(const Mat<dim>& F) const {
     const Real J = F.determinant();
-    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Real Jm2d = pow_minus_two_over_dim<dim>(J);
     const Mat<dim> b = F * F.transpose();
     Mat<dim> tau = (mu * Jm2d) * (b - (b.trace() / Real(dim)) * Mat<dim>::Identity());
     tau.diagonal().array() += Real(0.5) * kappa * (J * J - Real(1));
@@ -115,7 +116,7 @@ struct NeoHookeanSplit {
   template <int dim>
   Vec<dim> kirchhoff_from_singular_values(const Vec<dim>& s) const {
     const Real J = s.prod();
-    const Real Jm2d = std::pow(J, Real(-2) / Real(dim));
+    const Real Jm2d = pow_minus_two_over_dim<dim>(J);
     const Vec<dim> s2 = s.array().square().matrix();
     Vec<dim> tau = (mu * Jm2d) * (s2.array() - s2.sum() / Real(dim)).matrix();
     tau.array() += Real(0.5) * kappa * (J * J - Real(1));

@@ -39,25 +39,37 @@ inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t
 template <int dim>
 inline Real particle_elastic_energy(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return p.volume0[q] * m.water.energy_density(p.J[q]);
-    case MaterialKind::Ice: return p.volume0[q] * m.ice.elastic.energy_density<dim>(p.F[q]);
+    case MaterialKind::Water: return reference_volume(m, p.mass[q]) * m.water.energy_density(p.J[q]);
+    case MaterialKind::Ice: return reference_volume(m, p.mass[q]) * m.ice.elastic.energy_density<dim>(p.F[q]);
   }
   return 0;
 }
 
-// Largest wave speed of particle q's material in its current state. Ice: P-wave speed
-// sqrt(M_p / rho) with the small-strain modulus M_p = kappa + 2 mu (1 - 1/d), raised by the current
-// density ratio J >= 1 (the volumetric tangent kappa/2 (J^2 + 1) J-scaled grows like J^2 in tension).
+// Wave speeds. Ice: P-wave speed sqrt(M_p / rho) with the small-strain modulus M_p = kappa + 2 mu (1 - 1/d),
+// raised by the current density ratio J >= 1 (the volumetric tangent kappa/2 (J^2 + 1) J-scaled grows like
+// J^2 in tension). Water: the acoustic speed c(J), which grows as J falls.
+// Both grow monotonically with a scalar "stiffening" state s of the particle (ice: max(det F, 1); water: 1/J),
+// so the fastest wave of a material is the wave speed at the largest s of its particles: the time step
+// needs one wave-speed evaluation per material, not per particle.
 template <int dim>
-inline Real particle_wave_speed(const Material& m, const Particles<dim>& p, size_t q) {
+inline Real particle_stiffening(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return m.water.wave_speed(p.J[q]);
-    case MaterialKind::Ice: {
-      const Real Je = std::max(p.F[q].determinant(), Real(1));
-      return Je * std::sqrt(m.ice.elastic.p_wave_modulus<dim>() / m.density);
-    }
+    case MaterialKind::Water: return Real(1) / p.J[q];
+    case MaterialKind::Ice: return std::max(p.F[q].determinant(), Real(1));
   }
   return 0;
+}
+template <int dim>
+inline Real wave_speed_at_stiffening(const Material& m, Real s) {
+  switch (m.kind) {
+    case MaterialKind::Water: return m.water.wave_speed(Real(1) / s);
+    case MaterialKind::Ice: return s * std::sqrt(m.ice.elastic.p_wave_modulus<dim>() / m.density);
+  }
+  return 0;
+}
+template <int dim>
+inline Real particle_wave_speed(const Material& m, const Particles<dim>& p, size_t q) {
+  return wave_speed_at_stiffening<dim>(m, particle_stiffening(m, p, q));
 }
 
 }  // namespace cdmpm

@@ -16,22 +16,23 @@
 #include <cmath>
 
 #include "core/types.h"
+#include "math/powers.h"
 
 namespace cdmpm {
 
 struct WeaklyCompressibleWater {
   Real rho0 = 1000, K = 2e5, gamma = 7, mu = 0;
 
-  Real pressure(Real J) const { return J < Real(1) ? K / gamma * (std::pow(J, -gamma) - Real(1)) : Real(0); }
+  Real pressure(Real J) const { return J < Real(1) ? K / gamma * (real_pow(J, -gamma) - Real(1)) : Real(0); }
 
   // J at which the equation of state gives pressure p (used for the hydrostatic pre-compression).
   Real volume_ratio_at_pressure(Real p) const { return std::pow(Real(1) + gamma * p / K, Real(-1) / gamma); }
 
-  Real wave_speed(Real J) const { return std::sqrt(K / rho0 * std::pow(J, Real(1) - gamma)); }
+  Real wave_speed(Real J) const { return std::sqrt(K / rho0 * real_pow(J, Real(1) - gamma)); }
 
   Real energy_density(Real J) const {
     if (J >= Real(1)) return 0;
-    return K / gamma * ((std::pow(J, Real(1) - gamma) - Real(1)) / (gamma - Real(1)) + J - Real(1));
+    return K / gamma * ((real_pow(J, Real(1) - gamma) - Real(1)) / (gamma - Real(1)) + J - Real(1));
   }
 
   // Kirchhoff stress from J and the velocity gradient estimate C.

@@ -47,7 +47,7 @@ class IcebergTracker {
     for (size_t q = 0; q < n; ++q) {
       const Material& m = sim_.materials[P.material[q]];
       is_ice[q] = m.kind == MaterialKind::Ice;
-      volume[q] = P.volume0[q] * P.J[q];
+      volume[q] = reference_volume(sim_.materials[P.material[q]], P.mass[q]) * P.J[q];
       damage[q] = is_ice[q] ? m.ice.damage(P.alpha[q]) : Real(0);
     }
     const OutputSpec& o = sim_.scene.output;

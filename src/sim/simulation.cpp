@@ -125,9 +125,9 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
       const Vec<dim> xp = x.template cast<Real>();
       const Vec<dim> vp = v0 + G * (xp - centre);
       if (mat.kind == MaterialKind::Ice)
-        particles.add_solid(xp, vp, mat.density * V0, V0, J, body.material_index, G, F, mat.ice.alpha_initial);
+        particles.add_solid(xp, vp, mat.density * V0, J, body.material_index, G, F, mat.ice.alpha_initial);
       else
-        particles.add_fluid(xp, vp, mat.density * V0, V0, J, body.material_index, G);
+        particles.add_fluid(xp, vp, mat.density * V0, J, body.material_index, G);
     }
     int a = up - 1;
     for (; a >= 0; --a) {
@@ -138,17 +138,28 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
   }
 }
 
+// The largest particle speed, and the largest wave speed from each material's stiffest particle (stress.h).
 template <int dim>
 void Simulation<dim>::update_speeds() {
-  const size_t n = particles.size();
-  Real vmax2 = 0, cmax = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax2, cmax)
-  for (size_t q = 0; q < n; ++q) {
-    vmax2 = std::max(vmax2, particles.v[q].squaredNorm());
-    cmax = std::max(cmax, particle_wave_speed(materials[particles.material[q]], particles, q));
+  const size_t n = particles.size(), nm = materials.size();
+  Real vmax2 = 0;
+  std::vector<Real> stiffest(nm, Real(0));
+#pragma omp parallel reduction(max : vmax2)
+  {
+    std::vector<Real> local(nm, Real(0));
+#pragma omp for schedule(static) nowait
+    for (size_t q = 0; q < n; ++q) {
+      vmax2 = std::max(vmax2, particles.v[q].squaredNorm());
+      const int32_t mi = particles.material[q];
+      local[mi] = std::max(local[mi], particle_stiffening(materials[mi], particles, q));
+    }
+#pragma omp critical(cdmpm_update_speeds)
+    for (size_t mi = 0; mi < nm; ++mi) stiffest[mi] = std::max(stiffest[mi], local[mi]);
   }
   max_speed = std::sqrt(vmax2);
-  max_wave_speed = cmax;
+  max_wave_speed = 0;
+  for (size_t mi = 0; mi < nm; ++mi)
+    if (stiffest[mi] > 0) max_wave_speed = std::max(max_wave_speed, wave_speed_at_stiffening<dim>(materials[mi], stiffest[mi]));
 }
 
 template <int dim>
@@ -168,7 +179,7 @@ void Simulation<dim>::step(Real dt) {
     particles.permute(bins_.order);
   }
   bins_.build(particles, grid);
-  grid.clear();
+  grid.activate(bins_.blocks);
   p2g(particles, materials, bins_, grid, dt);
   for (const auto& b : boundaries) b->fold_ghosts(grid);
   for (const auto& b : boundaries) b->move_to(time);
@@ -176,14 +187,12 @@ void Simulation<dim>::step(Real dt) {
   // Unfold in the reverse order of folding (the adjoint), so a ghost that is folded twice, e.g. at the corner
   // of a wall and an obstacle, reads its mirror after that mirror has itself been unfolded.
   for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(grid);
-  g2p(particles, grid);
-  constitutive_update(particles, materials, dt);
-  if (!boundaries.empty()) {
-    const size_t n = particles.size();
-#pragma omp parallel for schedule(static)
-    for (size_t q = 0; q < n; ++q)
-      for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
-  }
+  // g2p, then each particle's constitutive update, advection and return inside the walls, done per particle
+  // while its state is in cache (the same as three passes over the particles, in one).
+  g2p(particles, grid, bins_, [&](size_t q) {
+    constitutive_update(particles, materials, q, dt);
+    for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
+  });
   remove_sunk_particles();
   update_speeds();
   time += dt;

@@ -3,32 +3,47 @@
 //   v_p = sum_i w_ip v_i,   C_p = D^-1 sum_i w_ip v_i (x_i - x_p)^T
 // (Jiang et al. 2015, eq. 9-10; D^-1 = 4/dx^2 for quadratic B-splines). C_p is both the APIC affine
 // matrix and the particle's velocity gradient used by the constitutive update. Positions are advected
-// after the constitutive update (material/constitutive_update.h).
+// after the constitutive update (material/constitutive_update.h). Particles are processed block by block:
+// a block's grid velocities are copied once into a dense patch and gathered from there (block_patch.h).
 #pragma once
+
+#include <array>
 
 #include "core/bspline.h"
 #include "core/particles.h"
 #include "grid/grid.h"
+#include "grid/particle_bins.h"
+#include "transfer/block_patch.h"
 
 namespace cdmpm {
 
-template <int dim>
-void g2p(Particles<dim>& p, const Grid<dim>& g) {
+// `after(q)` runs right after particle q's v and C are set (the step passes the constitutive update and
+// advection of q, done while q's state is in cache); by default nothing.
+struct NoParticleUpdate {
+  void operator()(size_t) const {}
+};
+
+template <int dim, class After = NoParticleUpdate>
+void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, After&& after = {}) {
   const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
-  const size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (size_t q = 0; q < n; ++q) {
-    const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
-    Vec<dim> v = Vec<dim>::Zero();
-    Mat<dim> B = Mat<dim>::Zero();
-    for_each_stencil_node<dim>([&](const IVec<dim>& o) {
-      const Real w = s.weight(o);
-      const Vec<dim>& vi = g.momentum[g.index(s.base + o)];
-      v += w * vi;
-      B += (w * vi) * s.offset(o).transpose();
-    });
-    p.v[q] = v;
-    p.C[q] = Dinv_dx * B;
+  const size_t nb = bins.bin_count();
+#pragma omp parallel for schedule(dynamic, 4)
+  for (size_t j = 0; j < nb; ++j) {
+    const BlockPatch<dim> patch(g, bins.blocks[j]);
+    std::array<Vec<dim>, BlockPatch<dim>::size> pv;
+    for (auto& v : pv) v.setZero();
+    patch.for_each_node([&](int n, size_t k) { pv[n] = g.momentum[k]; });
+    for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
+      const uint32_t q = bins.order[k];
+      const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
+      Vec<dim> v;
+      Mat<dim> B;  // sum_i w_i v_i o_i^T; the node's offset from the particle is o_i - fx
+      gather_from_patch<dim>(pv, s, patch.base_index(s), v, B);
+      B -= v * s.fx.transpose();
+      p.v[q] = v;
+      p.C[q] = Dinv_dx * B;
+      after(q);
+    }
   }
 }
 

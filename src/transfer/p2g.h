@@ -10,8 +10,10 @@
 // linear and angular momentum exactly.
 //
 // Race-free and deterministic: blocks of one colour run in parallel, colours in sequence (particle_bins.h).
+// Each block's particles scatter into a dense patch that is then added to the sparse grid (block_patch.h).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/bspline.h"
@@ -19,6 +21,7 @@
 #include "grid/grid.h"
 #include "grid/particle_bins.h"
 #include "material/stress.h"
+#include "transfer/block_patch.h"
 
 namespace cdmpm {
 
@@ -26,26 +29,30 @@ template <int dim>
 void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
          Real dt) {
   const Real Dinv = Real(4) * g.inv_dx * g.inv_dx;
-  for (const auto& blocks : bins.colour_blocks) {
+  for (const auto& colour : bins.colour_bins) {
 #pragma omp parallel for schedule(dynamic, 4)
-    for (size_t bi = 0; bi < blocks.size(); ++bi) {
-      const uint32_t b = blocks[bi];
-      for (uint32_t k = bins.block_start[b]; k < bins.block_start[b + 1]; ++k) {
+    for (size_t ci = 0; ci < colour.size(); ++ci) {
+      const uint32_t j = colour[ci];
+      const BlockPatch<dim> patch(g, bins.blocks[j]);
+      PatchAccumulator<dim> acc;
+      for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
         const uint32_t q = bins.order[k];
         const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
         const Real m = p.mass[q];
         Mat<dim> affine = m * p.C[q];
-        if (dt != 0) affine -= (dt * p.volume0[q] * Dinv) * kirchhoff_stress(materials[p.material[q]], p, q);
-        // Affine term in units of dx: (x_i - x_p) = dx * offset.
+        if (dt != 0) {
+          const Material& mat = materials[p.material[q]];
+          affine -= (dt * reference_volume(mat, m) * Dinv) * kirchhoff_stress(mat, p, q);
+        }
+        // Affine term in units of dx: (x_i - x_p) = dx (o - fx), so node i's share is
+        // w_i (m v - A fx + A o) with A = affine * dx.
         affine *= g.dx;
-        const Vec<dim> mv = m * p.v[q];
-        for_each_stencil_node<dim>([&](const IVec<dim>& o) {
-          const Real w = s.weight(o);
-          const size_t n = g.index(s.base + o);
-          g.mass[n] += w * m;
-          g.momentum[n] += w * (mv + affine * s.offset(o));
-        });
+        scatter_to_patch<dim>(acc, s, patch.base_index(s), m, m * p.v[q] - affine * s.fx, affine);
       }
+      patch.for_each_node([&](int n, size_t k) {
+        g.mass[k] += acc.mass[n];
+        g.momentum[k] += acc.momentum[n];
+      });
     }
   }
 }

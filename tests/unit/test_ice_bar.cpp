@@ -75,7 +75,7 @@ Curve run_bar(double strain_rate, double end) {
     double s = 0, vol = 0;
     for (size_t q = 0; q < sim.particles.size(); ++q) {
       if (std::abs(sim.particles.x[q][0] - bar().centre) > 0.5) continue;
-      const double V = sim.particles.volume0[q];
+      const double V = reference_volume(m, sim.particles.mass[q]);
       s += V * kirchhoff_stress(m, sim.particles, q)(0, 0);
       vol += V;
     }

@@ -19,8 +19,8 @@ Mat<2> diag(Real a) { return Vec<2>(a, a).asDiagonal(); }
 TEST(Particles, SolidsFirstAndPermuteCarriesTheSolidState) {
   // Particles are told apart by their mass k; solid k has F = k I and alpha = -k.
   Particles<2> p;
-  auto fluid = [&](Real k) { p.add_fluid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, 0); };
-  auto solid = [&](Real k) { p.add_solid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, 1, Mat<2>::Zero(), diag(k), -k); };
+  auto fluid = [&](Real k) { p.add_fluid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 0); };
+  auto solid = [&](Real k) { p.add_solid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, Mat<2>::Zero(), diag(k), -k); };
   solid(1);
   fluid(2);
   solid(3);  // added after a fluid: goes in front of it
@@ -95,15 +95,15 @@ TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
   EXPECT_EQ(back.alpha, sim.particles.alpha);
   EXPECT_EQ(back.x, sim.particles.x);
 
-  // A checkpoint of the previous format (F and alpha for every particle) names both formats.
-  std::ofstream(dir / "old.bin", std::ios::binary) << "CDMPMCK2" << std::string(64, '\0');
+  // A checkpoint of the previous format (with the reference volume) names both formats.
+  std::ofstream(dir / "old.bin", std::ios::binary) << "CDMPMCK3" << std::string(64, '\0');
   try {
     read_checkpoint(dir / "old.bin", back);
     FAIL() << "an old-format checkpoint was read";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("CDMPMCK2"), std::string::npos) << what;
     EXPECT_NE(what.find("CDMPMCK3"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK4"), std::string::npos) << what;
     EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
   }
 }
