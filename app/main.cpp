@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   std::string scene_path, out_dir, resume_dir;
   std::vector<std::string> overrides;
   int threads = 0;
+  long long max_steps = 0;
   bool quiet = false;
 
   auto* run = app.add_subcommand("run", "Run a scene");
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   run->add_option("--set", overrides, "Override a scene value, e.g. --set time.end=0.5 (repeatable)");
   run->add_option("--resume", resume_dir, "Continue the run in DIR from its last checkpoint");
+  run->add_option("--steps", max_steps, "Stop after N steps (e.g. to measure speed and memory); summary.json says so")
+      ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "No progress line");
 
   auto* check = app.add_subcommand("check", "Validate a scene and print a summary of it");
@@ -56,6 +59,7 @@ int main(int argc, char** argv) {
   cdmpm::RunOptions opt;
   opt.threads = threads;
   opt.progress = !quiet;
+  opt.max_steps = max_steps;
   if (!resume_dir.empty()) {
     if (!out_dir.empty() && std::filesystem::path(out_dir) != std::filesystem::path(resume_dir)) {
       std::cerr << "cdmpm: error: --out and --resume name different directories; a resumed run writes into DIR\n";

@@ -38,6 +38,7 @@
 #include <string>
 
 #include "bench_scenes.h"
+#include "io/process_memory.h"
 #include "sim/simulation.h"
 
 namespace {
@@ -54,21 +55,6 @@ long target_particles(long issue_size) {
   return n;
 }
 
-// Resets the process's peak resident set size (VmHWM) to the current one; ignored where not supported.
-void reset_peak_rss() {
-  std::ofstream f("/proc/self/clear_refs");
-  if (f) f << "5";
-}
-
-// Peak resident set size in bytes (VmHWM from /proc/self/status), 0 if unavailable.
-double peak_rss_bytes() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) * 1024.0;  // reported in kB
-  return 0;
-}
-
 // Fraction of the solid particles whose hardening variable alpha changes in one step, i.e. that yield.
 template <int dim>
 double yielding_fraction(cdmpm::Simulation<dim>& sim) {
@@ -83,7 +69,7 @@ double yielding_fraction(cdmpm::Simulation<dim>& sim) {
 template <int dim>
 void bench_case(benchmark::State& state, cdmpm::Scene (*make_scene)(long), long issue_size) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  reset_peak_rss();
+  cdmpm::reset_peak_rss();
   const cdmpm::Scene scene = make_scene(target_particles(issue_size));
   auto sim = std::make_unique<cdmpm::Simulation<dim>>(scene);
   const double n = static_cast<double>(sim->particles.size());
@@ -96,7 +82,7 @@ void bench_case(benchmark::State& state, cdmpm::Scene (*make_scene)(long), long 
   state.counters["particles"] = n;
   // Peak RSS since this case started, so it includes the process baseline (executable, libraries, OpenMP
   // runtime, benchmark bookkeeping; a few MB), not only the simulation's particle and grid data.
-  state.counters["bytes_per_particle"] = peak_rss_bytes() / n;
+  state.counters["bytes_per_particle"] = cdmpm::peak_rss_bytes() / n;
   if (sim->particles.solid_count() > 0) state.counters["yielding_fraction"] = yielding_fraction(*sim);
 }
 

@@ -59,6 +59,7 @@ struct BodySpec {
   std::string material;            // name of a material in `materials`
   int material_index = -1;         // resolved index into Scene::materials
   ShapeSpec shape;
+  std::vector<ShapeSpec> holes;    // regions left empty inside the shape (crevasses, notches)
   int particles_per_cell = 0;      // must be n^dim (n particles per axis per cell)
   std::vector<double> velocity;    // initial velocity, default zero
   // initial velocity gradient G (row-major dim x dim, default zero): v(x) = velocity + G (x - c), c the centre

@@ -310,7 +310,7 @@ class Loader {
   }
 
   void body(const Node& b) {
-    object(b, {"material", "particles_per_cell", "shape", "velocity", "velocity_gradient", "hydrostatic",
+    object(b, {"material", "particles_per_cell", "shape", "holes", "velocity", "velocity_gradient", "hydrostatic",
                "surface_level"});
     BodySpec spec;
     spec.material_index = material_ref(required(b, "material"));
@@ -321,6 +321,10 @@ class Loader {
     if (std::lround(std::pow(per_axis, dim_)) != spec.particles_per_cell)
       expected(ppc, dim_ == 2 ? "an integer n^2 (1, 4, 9, 16, ...)" : "an integer n^3 (1, 8, 27, 64, ...)");
     spec.shape = shape(required(b, "shape"));
+    if (b.has("holes")) {
+      Node h = b["holes"];
+      for (size_t i = 0, n = array(h, 0, "an array of shapes"); i < n; ++i) spec.holes.push_back(shape(h[i]));
+    }
     spec.velocity = b.has("velocity") ? numbers(b["velocity"], dim_) : std::vector<double>(dim_, 0.0);
     if (b.has("velocity_gradient")) {
       Node g = b["velocity_gradient"];

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "io/checkpoint.h"
+#include "io/process_memory.h"
 #include "io/vtu_writer.h"
 #include "material/stress.h"
 #include "probe/energy.h"
@@ -157,6 +158,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
 
   RunResult result{"completed", "", 0};
   const double t_begin = sim.time;
+  const long long first_step = sim.steps;
+  const double setup_wall = std::chrono::duration<double>(Clock::now() - wall_start).count();
   double particle_steps = 0;  // sum over steps of the particle count (sinks may remove particles)
   auto last_progress = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
@@ -210,6 +213,10 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
       result.reason = os.str();
       break;
     }
+    if (opt.max_steps > 0 && sim.steps - first_step >= opt.max_steps) {
+      result.reason = "stopped after " + std::to_string(opt.max_steps) + " steps (--steps)";
+      break;
+    }
     if (opt.progress && Clock::now() - last_progress > std::chrono::seconds(2)) {
       progress_line(false);
       last_progress = Clock::now();
@@ -230,6 +237,11 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   s["sim_time"] = sim.time;
   s["wall_time"] = wall;
   s["particle_steps_per_second"] = particle_steps / std::max(wall, 1e-9);
+  // The same without the set-up (seeding or reading the checkpoint, first frame): the stepping rate.
+  s["setup_wall_time"] = setup_wall;
+  s["stepping_particle_steps_per_second"] = particle_steps / std::max(wall - setup_wall, 1e-9);
+  s["peak_memory_bytes"] = peak_rss_bytes();
+  s["bytes_per_particle"] = peak_rss_bytes() / std::max<double>(1, double(sim.particles.size()));
   s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
   s["energy"] = {{"kinetic", e1.kinetic}, {"gravitational", e1.gravitational}, {"elastic", e1.elastic}, {"total", e1.total()}};
   s["energy_initial"] = {{"kinetic", e0.kinetic}, {"gravitational", e0.gravitational}, {"elastic", e0.elastic}, {"total", e0.total()}};

@@ -14,6 +14,7 @@ struct RunOptions {
   int threads = 0;       // 0 = OpenMP default
   bool resume = false;   // continue from out_dir/checkpoint.bin
   bool progress = true;  // progress line on stderr
+  long long max_steps = 0;  // stop (status completed) after this many steps of this run; 0: run to the end time
 };
 
 struct RunResult {

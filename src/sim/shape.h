@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Core>
+
 #include "scene/scene.h"
 
 namespace cdmpm {

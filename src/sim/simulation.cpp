@@ -76,6 +76,14 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
   const int n = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
   const double h = scene.domain.dx / n;
   const Shape<dim> shape(body.shape);
+  std::vector<Shape<dim>> holes;
+  for (const auto& h : body.holes) holes.emplace_back(h);
+  auto filled = [&](const Eigen::Matrix<double, dim, 1>& x) {
+    if (!shape.contains(x)) return false;
+    for (const auto& h : holes)
+      if (h.contains(x)) return false;
+    return true;
+  };
   Material& mat = materials[body.material_index];
   mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * h));
   const double vol = std::pow(h, dim);
@@ -104,7 +112,7 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
     for (k[up] = lo[up]; k[up] <= hi[up]; ++k[up]) {
       Eigen::Matrix<double, dim, 1> x;
       for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h;
-      if (shape.contains(x)) column.push_back(x);
+      if (filled(x)) column.push_back(x);
     }
     // Ice: depth below the body's own top surface in this column (a sloping slab); water: below the level.
     const double top = column.empty() ? 0 : column.back()[up] + 0.5 * h;
