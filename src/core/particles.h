@@ -28,13 +28,16 @@
 
 namespace cdmpm {
 
+// Index of a particle's material in the scene's material list; at most 256 materials (scene_loader checks).
+using MaterialId = uint8_t;
+
 template <int dim>
 struct Particles {
   // Every particle.
   std::vector<Vec<dim>> x, v;
   std::vector<Mat<dim>> C;
   std::vector<Real> mass, J;
-  std::vector<int32_t> material;
+  std::vector<MaterialId> material;
   // Solids only: entry q is the state of particle q < solid_count().
   std::vector<Mat<dim>> F;
   std::vector<Real> alpha;
@@ -43,14 +46,14 @@ struct Particles {
   size_t solid_count() const { return F.size(); }
 
   // Appends a fluid particle.
-  void add_fluid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, int32_t mat,
+  void add_fluid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, MaterialId mat,
                  const Mat<dim>& Cp = Mat<dim>::Zero()) {
     insert_common(size(), xp, vp, Cp, m, Jp, mat);
   }
 
   // Adds a solid particle with elastic deformation gradient Fe and hardening variable alpha0 after the
   // last solid (an append while no fluid has been added; otherwise every fluid array is shifted).
-  void add_solid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, int32_t mat, const Mat<dim>& Cp,
+  void add_solid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, MaterialId mat, const Mat<dim>& Cp,
                  const Mat<dim>& Fe, Real alpha0) {
     insert_common(solid_count(), xp, vp, Cp, m, Jp, mat);
     F.push_back(Fe);
@@ -73,17 +76,23 @@ struct Particles {
   // `order` may list a subset: the particles it leaves out are removed (sinks, sim/simulation.cpp).
   //
   // A full permutation is applied in place along its cycles, every array by its own thread, so the
-  // reordering holds no copy of any field: it needs the permutation (4 B per particle) and a bit per particle.
+  // reordering holds no copy of any field: it needs the permutation (4 B per particle; a second copy only
+  // when solids must be moved in front) and a bit per particle.
   // A subset in increasing order (removal) is compacted in place; any other subset is gathered into copies.
-  void permute(const std::vector<uint32_t>& order) {
+  void permute(std::vector<uint32_t> o) {  // pass the order with std::move where it is not needed after
     const size_t ns = solid_count(), n = size();
-    std::vector<uint32_t> o;
-    o.reserve(order.size());
-    for (const uint32_t q : order)
-      if (q < ns) o.push_back(q);
-    const size_t new_ns = o.size();
-    for (const uint32_t q : order)
-      if (q >= ns) o.push_back(q);
+    size_t new_ns = 0;
+    for (const uint32_t q : o) new_ns += q < ns;
+    // Solids first already (always when all particles are solids or all fluids): o is used as it is.
+    if (!std::all_of(o.begin(), o.begin() + new_ns, [&](uint32_t q) { return q < ns; })) {
+      std::vector<uint32_t> split;
+      split.reserve(o.size());
+      for (const uint32_t q : o)
+        if (q < ns) split.push_back(q);
+      for (const uint32_t q : o)
+        if (q >= ns) split.push_back(q);
+      o.swap(split);
+    }
     if (o.size() == n && permute_in_place(o)) return;
     const bool increasing = std::is_sorted(o.begin(), o.end()) && std::adjacent_find(o.begin(), o.end()) == o.end();
     auto compact_or_gather = [&](auto& a, size_t m) {  // the first m entries of o index into a
@@ -149,7 +158,7 @@ struct Particles {
   }
 
   void insert_common(size_t k, const Vec<dim>& xp, const Vec<dim>& vp, const Mat<dim>& Cp, Real m, Real Jp,
-                     int32_t mat) {
+                     MaterialId mat) {
     x.insert(x.begin() + k, xp);
     v.insert(v.begin() + k, vp);
     C.insert(C.begin() + k, Cp);

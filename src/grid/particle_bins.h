@@ -36,12 +36,16 @@ struct ParticleBins {
   template <int dim>
   void build(const Particles<dim>& p, const Grid<dim>& g) {
     const size_t n = p.size();
-    std::vector<uint32_t> bin(n);  // per particle: lattice block, then bin (freed after the sort)
     if (bin_id_.size() != g.block_count()) bin_id_.assign(g.block_count(), -1);
+    // The block of particle k, recomputed in each pass rather than stored (4 B per particle less at peak).
+    auto block_of = [&](size_t k) {
+      const BSplineStencil<dim> s(p.x[k] * g.inv_dx);
+      return static_cast<uint32_t>(g.block_index(g.block_of(s.base)));
+    };
     int threads = omp_get_max_threads();
     std::vector<std::vector<uint32_t>> seen(threads);
-    // 1. Each particle's lattice block; each thread lists the blocks where its run of particles changes block
-    //    (particles are kept sorted by block, so these lists are short).
+    // 1. Each thread lists the blocks where its run of particles changes block (particles are kept sorted by
+    //    block, so these lists are short).
 #pragma omp parallel num_threads(threads)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
@@ -49,15 +53,14 @@ struct ParticleBins {
       const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
       uint32_t last = UINT32_MAX;
       for (size_t k = lo; k < hi; ++k) {
-        const BSplineStencil<dim> s(p.x[k] * g.inv_dx);
-        const uint32_t b = static_cast<uint32_t>(g.block_index(g.block_of(s.base)));
-        bin[k] = b;
+        const uint32_t b = block_of(k);
         if (b != last) seen[t].push_back(last = b);
       }
     }
     // 2. The distinct blocks, ascending, and the map lattice block -> bin.
     blocks.clear();
     for (const auto& s : seen) blocks.insert(blocks.end(), s.begin(), s.end());
+    seen.clear();
     std::sort(blocks.begin(), blocks.end());
     blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
     const size_t nb = blocks.size();
@@ -69,10 +72,7 @@ struct ParticleBins {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
       auto& c = count[t];
-      for (size_t k = lo; k < hi; ++k) {
-        bin[k] = static_cast<uint32_t>(bin_id_[bin[k]]);
-        ++c[bin[k]];
-      }
+      for (size_t k = lo; k < hi; ++k) ++c[bin_id_[block_of(k)]];
     }
     start.assign(nb + 1, 0);
     uint32_t at = 0;
@@ -91,7 +91,7 @@ struct ParticleBins {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
       auto& c = count[t];
-      for (size_t k = lo; k < hi; ++k) order[c[bin[k]]++] = static_cast<uint32_t>(k);
+      for (size_t k = lo; k < hi; ++k) order[c[bin_id_[block_of(k)]]++] = static_cast<uint32_t>(k);
     }
     for (const uint32_t b : blocks) bin_id_[b] = -1;
     colour_bins.assign(1u << dim, {});

@@ -239,6 +239,7 @@ class Loader {
 
   void materials(const Node& ms) {
     if (!ms.j.is_object() || ms.j.empty()) expected(ms, "an object with at least one material");
+    if (ms.j.size() > 256) expected(ms, "at most 256 materials");
     for (const auto& item : ms.j.items()) {
       Node m = ms[item.key()];
       if (!is_identifier(item.key()))

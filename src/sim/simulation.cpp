@@ -133,9 +133,10 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
       const Vec<dim> xp = x.template cast<Real>();
       const Vec<dim> vp = v0 + G * (xp - centre);
       if (mat.kind == MaterialKind::Ice)
-        particles.add_solid(xp, vp, mat.density * V0, J, body.material_index, G, F, mat.ice.alpha_initial);
+        particles.add_solid(xp, vp, mat.density * V0, J, static_cast<MaterialId>(body.material_index), G, F,
+                            mat.ice.alpha_initial);
       else
-        particles.add_fluid(xp, vp, mat.density * V0, J, body.material_index, G);
+        particles.add_fluid(xp, vp, mat.density * V0, J, static_cast<MaterialId>(body.material_index), G);
     }
     int a = up - 1;
     for (; a >= 0; --a) {
@@ -158,7 +159,7 @@ void Simulation<dim>::update_speeds() {
 #pragma omp for schedule(static) nowait
     for (size_t q = 0; q < n; ++q) {
       vmax2 = std::max(vmax2, particles.v[q].squaredNorm());
-      const int32_t mi = particles.material[q];
+      const MaterialId mi = particles.material[q];
       local[mi] = std::max(local[mi], particle_stiffening(materials[mi], particles, q));
     }
 #pragma omp critical(cdmpm_update_speeds)
@@ -184,7 +185,7 @@ template <int dim>
 void Simulation<dim>::step(Real dt) {
   if (steps % reorder_interval == 0) {
     bins_.build(particles, grid);
-    particles.permute(bins_.order);
+    particles.permute(std::move(bins_.order));  // the bins are rebuilt next
   }
   bins_.build(particles, grid);
   grid.activate(bins_.blocks);
@@ -233,7 +234,7 @@ void Simulation<dim>::remove_sunk_particles() {
   keep.reserve(n - count);
   for (size_t q = 0; q < n; ++q)
     if (!sunk[q]) keep.push_back(static_cast<uint32_t>(q));
-  particles.permute(keep);
+  particles.permute(std::move(keep));
 }
 
 template <int dim>

@@ -28,12 +28,12 @@ TEST(Particles, SolidsFirstAndPermuteCarriesTheSolidState) {
   ASSERT_EQ(p.size(), 4u);
   ASSERT_EQ(p.solid_count(), 2u);
   EXPECT_EQ(p.mass, (std::vector<Real>{1, 3, 2, 4}));
-  EXPECT_EQ(p.material, (std::vector<int32_t>{1, 1, 0, 0}));
+  EXPECT_EQ(p.material, (std::vector<MaterialId>{1, 1, 0, 0}));
 
   // Reversed order: the solids stay in front, in reversed order, and bring their F and alpha.
   p.permute({3, 2, 1, 0});
   EXPECT_EQ(p.mass, (std::vector<Real>{3, 1, 4, 2}));
-  EXPECT_EQ(p.material, (std::vector<int32_t>{1, 1, 0, 0}));
+  EXPECT_EQ(p.material, (std::vector<MaterialId>{1, 1, 0, 0}));
   ASSERT_EQ(p.solid_count(), 2u);
   for (size_t q = 0; q < p.size(); ++q) EXPECT_EQ(p.x[q], Vec<2>::Constant(p.mass[q]));
   for (size_t q = 0; q < p.solid_count(); ++q) {
