@@ -12,6 +12,13 @@
 
 namespace cdmpm {
 
+// floor(v) for |v| < 2^31, by truncation and a correction: std::floor is a library call on the x86-64
+// baseline (no SSE4.1 rounding instruction), and was a sixth of the particle-to-grid transfer.
+inline int floor_to_int(Real v) {
+  const int i = static_cast<int>(v);
+  return i - (v < static_cast<Real>(i));
+}
+
 template <int dim>
 struct BSplineStencil {
   IVec<dim> base;    // lowest node index of the 3^dim stencil
@@ -21,7 +28,7 @@ struct BSplineStencil {
   // x: particle position divided by dx.
   explicit BSplineStencil(const Vec<dim>& x) {
     for (int a = 0; a < dim; ++a) {
-      base[a] = static_cast<int>(std::floor(x[a] - Real(0.5)));
+      base[a] = floor_to_int(x[a] - Real(0.5));
       const Real f = x[a] - Real(base[a]);
       fx[a] = f;
       const Real d0 = Real(1.5) - f, d1 = f - Real(1), d2 = f - Real(0.5);

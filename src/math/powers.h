@@ -24,10 +24,9 @@ inline Real int_pow(Real x, int n) {
 
 // x^e; by repeated squaring when e is an integer of modest size, std::pow otherwise.
 inline Real real_pow(Real x, Real e) {
-  const Real r = std::round(e);
-  if (r == e && std::abs(r) <= 32) {
-    const int n = static_cast<int>(r);
-    return n >= 0 ? int_pow(x, n) : int_pow(Real(1) / x, -n);
+  if (std::abs(e) <= 32) {
+    const int n = static_cast<int>(e);  // truncation; e is an integer iff it equals n
+    if (static_cast<Real>(n) == e) return n >= 0 ? int_pow(x, n) : int_pow(Real(1) / x, -n);
   }
   return std::pow(x, e);
 }
