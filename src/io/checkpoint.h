@@ -1,9 +1,10 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
 //
-// Layout (format CDMPMCK3): magic "CDMPMCK3", dim, sizeof(Real), particle count, solid particle count,
-// the run metadata, then every per-particle array raw (Particles::for_each_array order), then the solid-only
+// Layout (format CDMPMCK4): magic "CDMPMCK4", dim, sizeof(Real), particle count, solid particle count,
+// the run metadata (CDMPMCK4 added the rigid bodies' state, sim/rigid_bodies.h, to it), then every per-particle array raw (Particles::for_each_array order), then the solid-only
 // arrays F and alpha (Particles::for_each_solid_array order; the solids are particles 0 .. solid count - 1).
-// CDMPMCK2 (F and alpha for every particle) is refused with a message saying so. Written to a temporary file
+// Older formats (CDMPMCK2: F and alpha for every particle; CDMPMCK3: no rigid bodies) are refused with a
+// message saying so. Written to a temporary file
 // and renamed, so the previous checkpoint stays valid until the new one is complete. A resumed run
 // continues bit for bit: the grid, particle bins and speeds are all recomputed from the particle state.
 #pragma once
@@ -28,6 +29,7 @@ struct CheckpointMeta {
   uint64_t probes_csv_bytes = 0;                        // size of probes.csv at the checkpoint
   uint64_t icebergs_csv_bytes = 0;                      // size of icebergs.csv at the checkpoint
   std::vector<double> first_iceberg;                    // IcebergTracker::first_ (empty: none yet)
+  std::vector<double> rigid_bodies;                     // RigidBodies::save() (empty: no rigid body)
 };
 
 template <int dim>

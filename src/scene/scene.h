@@ -30,7 +30,7 @@ struct TimeSpec {
 
 struct MaterialSpec {
   std::string name;
-  std::string type;  // "water" or "ice"
+  std::string type;  // "water", "ice" or "rigid" (a rigid body's material: density and the water keys but viscosity)
   double density = 0;  // reference density rho0 [kg/m^3]
   // water: Tait equation of state p = K/gamma ((rho/rho0)^gamma - 1), optional dynamic viscosity
   double bulk_modulus = 0;  // K [Pa]
@@ -66,6 +66,11 @@ struct BodySpec {
   std::vector<double> velocity_gradient;
   bool hydrostatic = true;         // start in equilibrium under gravity (water: hydrostatic; ice: lithostatic)
   std::optional<double> surface_level;  // free-surface height for the pre-compression; default shape top
+  // Rigid bodies only (material type "rigid", key "rigid" of the body; sim/rigid_bodies.h):
+  double tilt = 0;                 // initial rotation of the shape [degrees], turning +x towards up (counter-
+                                   // clockwise in 2D; in the x-z plane in 3D), about the hinge if any, else the centre
+  std::vector<double> hinge;       // fixed pivot point (dim entries); empty = free body
+  double hold_until = 0;           // the body is held at rest until this time [s], then released
 };
 
 struct BoundarySpec {
@@ -100,7 +105,8 @@ struct SinkSpec {
 struct ProbeSpec {
   std::string name;
   // "wave_gauge", "front", "pressure", "kinetic_energy", "gravitational_energy", "elastic_energy",
-  // "total_energy", "mass"
+  // "total_energy", "mass", "rigid_position", "rigid_velocity", "rigid_angle" (of the rigid body made of
+  // `material`; position and velocity give dim columns <name>_x, <name>_y(, <name>_z))
   std::string type;
   std::vector<double> position;         // pressure: dim entries; wave_gauge: dim-1 horizontal entries
   std::string material;                 // optional material filter (empty = all materials)
