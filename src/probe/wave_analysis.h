@@ -2,12 +2,14 @@
 // gauge, and the celerity of the leading crest between gauges.
 //
 // First crest of a record eta(t) (elevation above the still level): let eta_max be the largest elevation in
-// the record and eta_th = crest_fraction * eta_max (default 1/4). The leading wave is the first run of
-// consecutive samples with eta >= eta_th; its crest is the largest sample of that run, refined by the vertex
-// of the parabola through it and its two neighbours. The amplitude is the crest's elevation and the arrival
-// time the crest's time. Sub-threshold noise ahead of the wave (surface-particle jitter of a fraction of the
-// particle spacing) and later, higher waves (reflections) do not move it; a record that never rises above
-// zero has no crest.
+// the record and eta_th = crest_fraction * eta_max (default 1/4). The leading wave starts at the first sample
+// with eta >= eta_th and ends at the first later sample that falls below eta_th or more than eta_th / 2 below
+// the largest sample since the start (so a crest that a later, higher wave joins before the record falls back
+// below eta_th is still seen as the first). Its crest is its largest sample, refined by the vertex of the
+// parabola through it and its two neighbours. The amplitude is the crest's elevation and the arrival time the
+// crest's time. Noise ahead of the wave (surface-particle jitter of a fraction of the particle spacing) and
+// wiggles smaller than eta_th / 2 do not move it, nor do later, higher waves (reflections); a record that never
+// rises above zero has no crest.
 // Celerity between two gauges: c = (x_2 - x_1) / (t_2 - t_1) of their crests; the run's celerity is the
 // least-squares slope of x against arrival time over all gauges with a crest.
 #pragma once
@@ -35,8 +37,10 @@ inline std::optional<Crest> first_crest(const std::vector<double>& t, const std:
   size_t i = 0;
   while (i < eta.size() && !(std::isfinite(eta[i]) && eta[i] >= threshold)) ++i;
   size_t best = i;
-  for (; i < eta.size() && std::isfinite(eta[i]) && eta[i] >= threshold; ++i)
+  for (; i < eta.size() && std::isfinite(eta[i]) && eta[i] >= threshold; ++i) {
     if (eta[i] > eta[best]) best = i;
+    if (eta[i] < eta[best] - 0.5 * threshold) break;
+  }
   Crest c{eta[best], t[best]};
   if (best > 0 && best + 1 < eta.size() && std::isfinite(eta[best - 1]) && std::isfinite(eta[best + 1])) {
     // Vertex of the parabola through the crest sample and its two neighbours (Newton form).

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -141,6 +142,7 @@ struct Scene {
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   nlohmann::json json;          // the scene as read, with --set overrides applied
+  std::map<std::string, double> parameters;  // the values of its "parameters" (after --set), for summary.json
 
   int material_index(const std::string& material_name) const {
     for (size_t i = 0; i < materials.size(); ++i)

@@ -590,8 +590,10 @@ void apply_override(json& j, const std::string& text, const std::string& file) {
 Scene scene_from_json(json j, const std::string& path, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(j, o, path);
   nlohmann::json resolved = j;
-  substitute_parameters(resolved, path);
+  std::map<std::string, double> parameters;
+  substitute_parameters(resolved, path, &parameters);
   Scene scene = Loader(path).load(resolved);
+  scene.parameters = std::move(parameters);
   scene.path = path;
   scene.json = std::move(j);
   return scene;

@@ -229,6 +229,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   nlohmann::json s;
   s["scene"] = scene.name;
   s["scene_file"] = scene.path;
+  s["parameters"] = scene.parameters;
   s["dim"] = dim;
   s["particles"] = sim.particles.size();
   s["steps"] = sim.steps;

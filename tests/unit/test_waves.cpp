@@ -39,6 +39,22 @@ TEST(WaveAnalysis, FirstCrestIgnoresNoiseAndLaterHigherWaves) {
   EXPECT_NEAR(c->amplitude, a, 2 * eps);
 }
 
+TEST(WaveAnalysis, FirstCrestIsSeparatedFromAHigherWaveThatJoinsIt) {
+  // A 1.6 cm crest at 5.1 s and a 2.1 cm wave at 7.2 s whose flanks overlap: the record stays above a quarter
+  // of the largest elevation between them but dips by more than half of that quarter.
+  std::vector<double> t, eta;
+  for (int i = 0; i <= 1000; ++i) {
+    t.push_back(0.01 * i);
+    eta.push_back(crest(t.back(), 0.016, 5.1, 0.6) + crest(t.back(), 0.021, 7.2, 0.6));
+  }
+  const auto c = first_crest(t, eta);
+  ASSERT_TRUE(c);
+  // The second wave's flank adds sech^2(2.1 / 0.6) * 2.1 cm ~ 0.08 mm at the first crest and shifts it by a
+  // fraction of a sample.
+  EXPECT_NEAR(c->time, 5.1, 0.02);
+  EXPECT_NEAR(c->amplitude, 0.016, 0.0002);
+}
+
 TEST(WaveAnalysis, ParabolicRefinementFindsTheCrestBetweenSamples) {
   // A parabola sampled off its vertex: the vertex is recovered exactly.
   std::vector<double> t, eta;
