@@ -1,10 +1,10 @@
 // rigid_bodies.h - rigid bodies made of material points, coupled to the other materials through the shared grid.
 //
 // Each rigid body is the set of particles of one rigid material (scene material type "rigid"; the loader lets a
-// rigid material make only one body). Its particles carry mass and momentum to the grid like any other
-// particle but have no stress (material/stress.h). After each grid-to-particle transfer, project() replaces
-// their velocities by the rigid motion that has the same linear and angular momentum (a momentum-conserving
-// projection, as in rigid-body APIC/FLIP couplings):
+// rigid material make only one body). Its particles carry mass, momentum and a penalty pressure (below) to the
+// grid like any other particle, so the body and the water share the velocity of every node they both touch
+// (no slip). After each grid-to-particle transfer, project() replaces their velocities by the rigid motion that
+// has the same linear and angular momentum:
 //   v_p = V + omega x (x_p - x_c),   C_p = [omega]_x (the skew matrix of omega, the rigid velocity gradient),
 //   V = P / M,  P = sum_p m_p v_p,  M = sum_p m_p,  x_c = sum_p m_p x_p / M,
 //   omega = I^-1 L,  L = sum_p [ m_p r_p x v_p + m_p D axial(C_p - C_p^T) ],  r_p = x_p - x_c,
@@ -19,7 +19,9 @@
 // so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
 // pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
 // (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
-// expansion.
+// expansion. (Known limit, docs/validation.md: through the shared nodes the body drags the water next to it,
+// which slows buoyancy-driven motions at coarse resolution. A pressure taken instead from the water around the
+// body, continuous across its surface, fed back on the water it compressed and made a surfacing body unstable.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity
@@ -29,7 +31,9 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "core/particles.h"
@@ -97,7 +101,7 @@ struct RigidAlgebra {
   }
   // The scene's tilt [degrees] as a rotation turning +x towards the vertical axis.
   static Mat<dim> tilt(double degrees) {
-    const Real a = static_cast<Real>(degrees * M_PI / 180);
+    const Real a = static_cast<Real>(degrees * std::numbers::pi / 180);
     Mat<dim> R = Mat<dim>::Identity();
     R(0, 0) = R(dim - 1, dim - 1) = std::cos(a);
     R(dim - 1, 0) = std::sin(a);
@@ -125,7 +129,7 @@ class RigidBodies {
       body.hinged = !b.hinge.empty();
       for (int a = 0; a < dim && body.hinged; ++a) body.pivot[a] = static_cast<Real>(b.hinge[a]);
       body.rotation = A::tilt(b.tilt);
-      body.angle = b.tilt * M_PI / 180;
+      body.angle = b.tilt * std::numbers::pi / 180;
       body_of_[b.material_index] = static_cast<int>(bodies.size());
       bodies.push_back(body);
     }
