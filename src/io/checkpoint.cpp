@@ -9,7 +9,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '4'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '5'};
 
 struct Writer {
   std::ofstream& os;
@@ -63,6 +63,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod(m.probes_csv_bytes);
     w.pod(m.icebergs_csv_bytes);
     w.vec(m.first_iceberg);
+    w.vec(m.rigid_bodies);
     p.for_each_array([&](auto& a) { w.vec(a); });
     p.for_each_solid_array([&](auto& a) { w.vec(a); });
     if (!os.flush()) throw std::runtime_error(path + ": writing checkpoint failed");
@@ -80,7 +81,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   if (magic[7] != kMagic[7])
     throw std::runtime_error(path + ": checkpoint format CDMPMCK" + std::string(1, magic[7]) +
                              " was written by another cdmpm version (this one reads CDMPMCK" + std::string(1, kMagic[7]) +
-                             ", with the ice state stored only for ice particles); rerun the scene without --resume");
+                             ", which adds the rigid bodies' state); rerun the scene without --resume");
   int32_t d = 0, real = 0;
   uint64_t n = 0, ns = 0;
   r.pod(d); r.pod(real); r.pod(n); r.pod(ns);
@@ -98,6 +99,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   r.pod(m.probes_csv_bytes);
   r.pod(m.icebergs_csv_bytes);
   r.vec(m.first_iceberg);
+  r.vec(m.rigid_bodies);
   auto read_arrays_of = [&](uint64_t count) {
     return [&, count](auto& a) {
       r.vec(a);

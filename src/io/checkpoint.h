@@ -1,10 +1,11 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
 //
-// Layout (format CDMPMCK4): magic "CDMPMCK4", dim, sizeof(Real), particle count, solid particle count,
-// the run metadata, then every per-particle array raw (Particles::for_each_array order), then the solid-only
-// arrays F and alpha (Particles::for_each_solid_array order; the solids are particles 0 .. solid count - 1).
-// Earlier formats (CDMPMCK3 stored the reference volume, CDMPMCK2 also F and alpha for every particle) are
-// refused with a message saying so. Written to a temporary file
+// Layout (format CDMPMCK5): magic "CDMPMCK5", dim, sizeof(Real), particle count, solid particle count,
+// the run metadata (with the rigid bodies' state, sim/rigid_bodies.h), then every per-particle array raw
+// (Particles::for_each_array order), then the solid-only arrays F and alpha (Particles::for_each_solid_array
+// order; the solids are particles 0 .. solid count - 1). Older formats (CDMPMCK2: F and alpha for every
+// particle; CDMPMCK3: no rigid bodies; CDMPMCK4: the reference volume and a 4-byte material id) are refused
+// with a message saying so. Written to a temporary file
 // and renamed, so the previous checkpoint stays valid until the new one is complete. A resumed run
 // continues bit for bit: the grid, particle bins and speeds are all recomputed from the particle state.
 #pragma once
@@ -29,6 +30,7 @@ struct CheckpointMeta {
   uint64_t probes_csv_bytes = 0;                        // size of probes.csv at the checkpoint
   uint64_t icebergs_csv_bytes = 0;                      // size of icebergs.csv at the checkpoint
   std::vector<double> first_iceberg;                    // IcebergTracker::first_ (empty: none yet)
+  std::vector<double> rigid_bodies;                     // RigidBodies::save() (empty: no rigid body)
 };
 
 template <int dim>

@@ -7,7 +7,9 @@
 //   F_trial = (I + dt C_p) F_elastic,   then the Cohesive Cam Clay return mapping projects F_trial onto the
 //   yield surface and updates the hardening variable alpha (material/cohesive_cam_clay.h).
 // F and alpha exist for ice particles only (core/particles.h: solids first), so they are touched in the Ice
-// case only.
+// case only. Rigid particles are not advected here: their body moves them rigidly (sim/rigid_bodies.h), so the
+// body keeps its shape exactly; their J was updated by the projection from the grid's divergence (their C is
+// skew afterwards, so the update here leaves it unchanged).
 #pragma once
 
 #include <vector>

@@ -5,7 +5,13 @@
 //   Water: weakly compressible fluid (material/weakly_compressible_water.h), state J;
 //   Ice:   split Neo-Hookean elasticity (material/neo_hookean_split.h) with cohesive Cam-Clay plasticity
 //          and softening (material/cohesive_cam_clay.h), state: elastic F and hardening variable alpha
-//          (stored for ice particles only, core/particles.h).
+//          (stored for ice particles only, core/particles.h);
+//   Rigid: a particle of a rigid body (sim/rigid_bodies.h): after each grid-to-particle transfer its velocity is
+//          projected onto its body's rigid motion. It carries the pressure of the Tait equation of state
+//          (`water`, with the body's density and bulk modulus, no viscosity) of a volume ratio J that follows the
+//          divergence of the grid velocity at the particle: the pressure that keeps other materials from
+//          flowing into the body (without it the body, having no stress, would let water seep through it).
+//          Stored with the fluids (no F or alpha).
 #pragma once
 
 #include <string>
@@ -16,7 +22,7 @@
 
 namespace cdmpm {
 
-enum class MaterialKind { Water, Ice };
+enum class MaterialKind { Water, Ice, Rigid };
 
 struct IceModel {
   NeoHookeanSplit elastic;

@@ -2,6 +2,8 @@
 // per-material wave speed and stored energy used by the time step and the energy probes.
 //   Water: tau = -J p(J) I + viscous part (material/weakly_compressible_water.h).
 //   Ice:   tau(F_elastic) of the split Neo-Hookean energy (material/neo_hookean_split.h).
+//   Rigid: the pressure of its equation of state, as water (material/material.h); its sum over a body is an
+//          internal force that the rigid projection (sim/rigid_bodies.h) cancels, so it acts only on the water.
 // Only ice particles have an F (core/particles.h: solids first), so F[q] is read in the Ice cases only.
 #pragma once
 
@@ -16,7 +18,8 @@ namespace cdmpm {
 template <int dim>
 inline Mat<dim> kirchhoff_stress(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return m.water.kirchhoff<dim>(p.J[q], p.C[q]);
+    case MaterialKind::Water:
+    case MaterialKind::Rigid: return m.water.kirchhoff<dim>(p.J[q], p.C[q]);
     case MaterialKind::Ice: return m.ice.elastic.kirchhoff<dim>(p.F[q]);
   }
   return Mat<dim>::Zero();
@@ -26,7 +29,8 @@ inline Mat<dim> kirchhoff_stress(const Material& m, const Particles<dim>& p, siz
 template <int dim>
 inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return m.water.pressure(p.J[q]);
+    case MaterialKind::Water:
+    case MaterialKind::Rigid: return m.water.pressure(p.J[q]);
     case MaterialKind::Ice: {
       const Real Je = p.F[q].determinant();
       return m.ice.elastic.pressure_of_J(Je) / Je;
@@ -39,7 +43,8 @@ inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t
 template <int dim>
 inline Real particle_elastic_energy(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return reference_volume(m, p.mass[q]) * m.water.energy_density(p.J[q]);
+    case MaterialKind::Water:
+    case MaterialKind::Rigid: return reference_volume(m, p.mass[q]) * m.water.energy_density(p.J[q]);
     case MaterialKind::Ice: return reference_volume(m, p.mass[q]) * m.ice.elastic.energy_density<dim>(p.F[q]);
   }
   return 0;
@@ -54,7 +59,8 @@ inline Real particle_elastic_energy(const Material& m, const Particles<dim>& p, 
 template <int dim>
 inline Real particle_stiffening(const Material& m, const Particles<dim>& p, size_t q) {
   switch (m.kind) {
-    case MaterialKind::Water: return Real(1) / p.J[q];
+    case MaterialKind::Water:
+    case MaterialKind::Rigid: return Real(1) / p.J[q];
     case MaterialKind::Ice: return std::max(p.F[q].determinant(), Real(1));
   }
   return 0;

@@ -25,7 +25,11 @@ Probes<dim>::Probes(const Scene& scene, const Simulation<dim>& sim) : scene_(sce
 template <int dim>
 std::string Probes<dim>::csv_header() const {
   std::string h = "time";
-  for (const ProbeSpec& p : scene_.probes) h += "," + p.name;
+  for (const ProbeSpec& p : scene_.probes) {
+    if (columns(p) == 1) h += "," + p.name;
+    else
+      for (int a = 0; a < dim; ++a) h += "," + p.name + "_" + "xyz"[a];
+  }
   return h;
 }
 
@@ -65,6 +69,11 @@ std::vector<double> Probes<dim>::sample(const Simulation<dim>& sim) const {
         if (selected(pr, m, P.material[q])) best = std::max(best, static_cast<double>(dir * P.x[q][pr.axis] + m.half_spacing));
       }
       out.push_back(std::isinf(best) ? kNaN : dir * best);
+    } else if (pr.type.starts_with("rigid_")) {
+      const RigidBody<dim>& b = sim.rigid.bodies[sim.rigid.index_of_material(pr.material_index)];
+      if (pr.type == "rigid_angle") out.push_back(b.angle);
+      for (int a = 0; a < dim && pr.type == "rigid_position"; ++a) out.push_back(b.centre[a]);
+      for (int a = 0; a < dim && pr.type == "rigid_velocity"; ++a) out.push_back(b.velocity[a]);
     } else if (pr.type == "pressure") {
       Vec<dim> x;
       for (int a = 0; a < dim; ++a) x[a] = static_cast<Real>(pr.position[a]);

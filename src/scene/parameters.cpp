@@ -135,7 +135,7 @@ void substitute(json& j, const std::map<std::string, double>& vars, const std::s
 
 }  // namespace
 
-void substitute_parameters(json& j, const std::string& file) {
+void substitute_parameters(json& j, const std::string& file, std::map<std::string, double>* resolved) {
   std::map<std::string, double> vars;
   if (j.is_object() && j.contains("parameters")) {
     const json& p = j["parameters"];
@@ -175,6 +175,7 @@ void substitute_parameters(json& j, const std::string& file) {
     j.erase("parameters");
   }
   substitute(j, vars, file, "");
+  if (resolved) *resolved = vars;
 }
 
 }  // namespace cdmpm

@@ -10,12 +10,15 @@
 // sees. Errors throw SceneError "<file>: <json.path>: <what is wrong>".
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
 namespace cdmpm {
 
-// Replaces every "=expression" string in `j` by its value and removes j["parameters"].
-void substitute_parameters(nlohmann::json& j, const std::string& file);
+// Replaces every "=expression" string in `j` by its value and removes j["parameters"]; the parameters' values
+// go into *resolved if given.
+void substitute_parameters(nlohmann::json& j, const std::string& file,
+                           std::map<std::string, double>* resolved = nullptr);
 
 }  // namespace cdmpm

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -30,7 +31,7 @@ struct TimeSpec {
 
 struct MaterialSpec {
   std::string name;
-  std::string type;  // "water" or "ice"
+  std::string type;  // "water", "ice" or "rigid" (a rigid body's material: density and the water keys but viscosity)
   double density = 0;  // reference density rho0 [kg/m^3]
   // water: Tait equation of state p = K/gamma ((rho/rho0)^gamma - 1), optional dynamic viscosity
   double bulk_modulus = 0;  // K [Pa]
@@ -67,6 +68,11 @@ struct BodySpec {
   std::vector<double> velocity_gradient;
   bool hydrostatic = true;         // start in equilibrium under gravity (water: hydrostatic; ice: lithostatic)
   std::optional<double> surface_level;  // free-surface height for the pre-compression; default shape top
+  // Rigid bodies only (material type "rigid", key "rigid" of the body; sim/rigid_bodies.h):
+  double tilt = 0;                 // initial rotation of the shape [degrees], turning +x towards up (counter-
+                                   // clockwise in 2D; in the x-z plane in 3D), about the hinge if any, else the centre
+  std::vector<double> hinge;       // fixed pivot point (dim entries); empty = free body
+  double hold_until = 0;           // the body is held at rest until this time [s], then released
 };
 
 struct BoundarySpec {
@@ -101,7 +107,8 @@ struct SinkSpec {
 struct ProbeSpec {
   std::string name;
   // "wave_gauge", "front", "pressure", "kinetic_energy", "gravitational_energy", "elastic_energy",
-  // "total_energy", "mass"
+  // "total_energy", "mass", "rigid_position", "rigid_velocity", "rigid_angle" (of the rigid body made of
+  // `material`; position and velocity give dim columns <name>_x, <name>_y(, <name>_z))
   std::string type;
   std::vector<double> position;         // pressure: dim entries; wave_gauge: dim-1 horizontal entries
   std::string material;                 // optional material filter (empty = all materials)
@@ -136,6 +143,7 @@ struct Scene {
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   nlohmann::json json;          // the scene as read, with --set overrides applied
+  std::map<std::string, double> parameters;  // the values of its "parameters" (after --set), for summary.json
 
   int material_index(const std::string& material_name) const {
     for (size_t i = 0; i < materials.size(); ++i)

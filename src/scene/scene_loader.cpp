@@ -247,8 +247,13 @@ class Loader {
       if (!m.j.is_object()) expected(m, "an object");
       MaterialSpec spec;
       spec.name = item.key();
-      spec.type = string(required(m, "type"), {"water", "ice"});
-      if (spec.type == "water") {
+      spec.type = string(required(m, "type"), {"water", "ice", "rigid"});
+      if (spec.type == "rigid") {
+        object(m, {"type", "density", "bulk_modulus", "gamma"});
+        spec.density = number(required(m, "density"), gt(0));
+        spec.bulk_modulus = number(required(m, "bulk_modulus"), gt(0));
+        spec.gamma = number(m, "gamma", gt(0), 7.0);
+      } else if (spec.type == "water") {
         object(m, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
         spec.density = number(required(m, "density"), gt(0));
         spec.bulk_modulus = number(required(m, "bulk_modulus"), gt(0));
@@ -312,10 +317,20 @@ class Loader {
 
   void body(const Node& b) {
     object(b, {"material", "particles_per_cell", "shape", "holes", "velocity", "velocity_gradient", "hydrostatic",
-               "surface_level"});
+               "surface_level", "rigid"});
     BodySpec spec;
     spec.material_index = material_ref(required(b, "material"));
     spec.material = s_.materials[spec.material_index].name;
+    const bool is_rigid = s_.materials[spec.material_index].type == "rigid";
+    if (is_rigid)
+      for (const auto& other : s_.bodies)
+        if (other.material_index == spec.material_index)
+          expected(b["material"], "a rigid material not used by another body (each rigid body needs its own rigid "
+                                  "material, which names it in probes)");
+    if (b.has("rigid")) {
+      if (!is_rigid) fail(b.child("rigid"), "only a body of a rigid material (\"type\": \"rigid\") takes this key");
+      rigid_options(b["rigid"], spec);
+    }
     Node ppc = required(b, "particles_per_cell");
     spec.particles_per_cell = integer(ppc, ge(1));
     int per_axis = static_cast<int>(std::lround(std::pow(spec.particles_per_cell, 1.0 / dim_)));
@@ -339,6 +354,17 @@ class Loader {
     spec.hydrostatic = b.has("hydrostatic") ? boolean(b["hydrostatic"]) : true;
     if (b.has("surface_level")) spec.surface_level = number(b["surface_level"]);
     s_.bodies.push_back(std::move(spec));
+  }
+
+  // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds}, all optional.
+  void rigid_options(const Node& r, BodySpec& spec) const {
+    object(r, {"tilt", "hinge", "hold_until"});
+    spec.tilt = number(r, "tilt", {-180, 180, true, true}, 0.0);
+    if (r.has("hinge")) {
+      spec.hinge = numbers(r["hinge"], dim_);
+      inside(r["hinge"], spec.hinge, spec.hinge, "a hinge point");
+    }
+    spec.hold_until = number(r, "hold_until", ge(0), 0.0);
   }
 
   ShapeSpec shape(const Node& n) {
@@ -435,6 +461,8 @@ class Loader {
     min_max(n, spec.min, spec.max);
     inside(n, spec.min, spec.max, "a sink");
     if (n.has("material")) spec.material_index = material_ref(n["material"]), spec.material = string(n["material"]);
+    if (spec.material_index >= 0 && s_.materials[spec.material_index].type == "rigid")
+      expected(n["material"], "a material that is not rigid (a sink would remove part of a rigid body)");
     s_.sinks.push_back(std::move(spec));
   }
 
@@ -450,8 +478,9 @@ class Loader {
   }
 
   void probe(const Node& n) {
-    static const Strings kTypes = {"wave_gauge",     "front",        "pressure", "kinetic_energy",
-                                   "gravitational_energy", "elastic_energy", "total_energy", "mass"};
+    static const Strings kTypes = {"wave_gauge",     "front",          "pressure",     "kinetic_energy",
+                                   "gravitational_energy", "elastic_energy", "total_energy", "mass",
+                                   "rigid_position", "rigid_velocity", "rigid_angle"};
     if (!n.j.is_object()) expected(n, "an object");
     ProbeSpec spec;
     spec.type = string(required(n, "type"), kTypes);
@@ -468,6 +497,13 @@ class Loader {
     for (const auto& other : s_.probes)
       if (other.name == spec.name) expected(name, "a unique probe name");
     if (n.has("material")) spec.material_index = material_ref(n["material"]), spec.material = string(n["material"]);
+    if (spec.type.starts_with("rigid_")) {
+      Node mat = required(n, "material");
+      if (s_.materials[spec.material_index].type != "rigid") expected(mat, "the name of a rigid material");
+      bool used = false;
+      for (const auto& b : s_.bodies) used = used || b.material_index == spec.material_index;
+      if (!used) expected(mat, "a rigid material that a body is made of");
+    }
     if (spec.type == "pressure" || spec.type == "wave_gauge") {
       Node pos = required(n, "position");
       spec.position = numbers(pos, spec.type == "pressure" ? dim_ : dim_ - 1);
@@ -559,8 +595,10 @@ void apply_override(json& j, const std::string& text, const std::string& file) {
 Scene scene_from_json(json j, const std::string& path, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) apply_override(j, o, path);
   nlohmann::json resolved = j;
-  substitute_parameters(resolved, path);
+  std::map<std::string, double> parameters;
+  substitute_parameters(resolved, path, &parameters);
   Scene scene = Loader(path).load(resolved);
+  scene.parameters = std::move(parameters);
   scene.path = path;
   scene.json = std::move(j);
   return scene;

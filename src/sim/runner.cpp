@@ -1,5 +1,6 @@
 // runner.cpp - the time loop and all run outputs (see runner.h). Output files under --out:
-//   particles_NNNN.vtu + particles.pvd (frames), probes.csv, checkpoint.bin, summary.json.
+//   particles_NNNN.vtu + particles.pvd (frames), probes.csv, checkpoint.bin, summary.json, and waves.csv for
+//   scenes with wave gauges (probe/wave_report.h).
 #include "sim/runner.h"
 
 #include <omp.h>
@@ -21,6 +22,7 @@
 #include "probe/energy.h"
 #include "probe/iceberg_tracker.h"
 #include "probe/probes.h"
+#include "probe/wave_report.h"
 #include "sim/simulation.h"
 
 namespace cdmpm {
@@ -103,6 +105,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     sim.wave_dt_at_start = static_cast<Real>(meta.wave_dt_at_start);
     sim.refresh();
     probes.still_levels = meta.still_levels;
+    if (!sim.rigid.load(meta.rigid_bodies))
+      throw std::runtime_error(ckpt + ": checkpoint holds the state of another set of rigid bodies than the scene's");
     const fs::path csv_path = out / "probes.csv";
     if (fs::exists(csv_path)) fs::resize_file(csv_path, meta.probes_csv_bytes);
     csv.open(csv_path, std::ios::app);
@@ -147,6 +151,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     meta.probes_csv_bytes = static_cast<uint64_t>(fs::file_size(out / "probes.csv"));
     meta.icebergs_csv_bytes = icebergs.active() ? static_cast<uint64_t>(fs::file_size(out / "icebergs.csv")) : 0;
     meta.first_iceberg = icebergs.first_;
+    meta.rigid_bodies = sim.rigid.save();
     write_checkpoint(ckpt, sim.particles, meta);
   };
   if (!opt.resume) {
@@ -231,6 +236,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   nlohmann::json s;
   s["scene"] = scene.name;
   s["scene_file"] = scene.path;
+  s["parameters"] = scene.parameters;
   s["dim"] = dim;
   s["particles"] = sim.particles.size();
   s["steps"] = sim.steps;
@@ -246,6 +252,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   s["energy"] = {{"kinetic", e1.kinetic}, {"gravitational", e1.gravitational}, {"elastic", e1.elastic}, {"total", e1.total()}};
   s["energy_initial"] = {{"kinetic", e0.kinetic}, {"gravitational", e0.gravitational}, {"elastic", e0.elastic}, {"total", e0.total()}};
   if (icebergs.active()) s["first_iceberg"] = icebergs.summary();
+  csv.close();
+  s.update(wave_report(scene, (out / "probes.csv").string(), (out / "waves.csv").string()));
   s["status"] = result.status;
   s["reason"] = result.reason;
   s["resumed"] = opt.resume;

@@ -27,7 +27,10 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
     Material m;
     m.name = ms.name;
     m.density = static_cast<Real>(ms.density);
-    if (ms.type == "water") {
+    if (ms.type == "rigid") {
+      m.kind = MaterialKind::Rigid;
+      m.water = {static_cast<Real>(ms.density), static_cast<Real>(ms.bulk_modulus), static_cast<Real>(ms.gamma), 0};
+    } else if (ms.type == "water") {
       m.kind = MaterialKind::Water;
       m.water = {static_cast<Real>(ms.density), static_cast<Real>(ms.bulk_modulus), static_cast<Real>(ms.gamma),
                  static_cast<Real>(ms.viscosity)};
@@ -53,6 +56,7 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
   for (const bool solids : {true, false})
     for (const BodySpec& b : s.bodies)
       if ((materials[b.material_index].kind == MaterialKind::Ice) == solids) seed_body(b);
+  rigid.init(s, materials, particles, grid.dx);
 
   // Explicit viscous diffusion limit dt <= dx^2 rho / (2 dim mu), scaled by wave_cfl.
   viscous_dt_ = std::numeric_limits<Real>::max();
@@ -103,6 +107,32 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
     lo[a] = static_cast<int>(std::floor(shape.lower(a) / h - 0.5));
     hi[a] = static_cast<int>(std::ceil(shape.upper(a) / h - 0.5));
   }
+  // A rigid body's shape is turned by its tilt about its hinge (or centre): the lattice points of the untilted
+  // shape are seeded, turned. Other bodies leave out the points inside any rigid body (a pool around a block).
+  struct Tilted {
+    Shape<dim> shape;
+    Mat<dim> R;
+    Vec<dim> pivot;
+  };
+  auto tilted = [&](const BodySpec& b) {
+    Tilted t{Shape<dim>(b.shape), RigidAlgebra<dim>::tilt(b.tilt), Vec<dim>::Zero()};
+    for (int a = 0; a < dim; ++a)
+      t.pivot[a] = static_cast<Real>(b.hinge.empty() ? 0.5 * (t.shape.lower(a) + t.shape.upper(a)) : b.hinge[a]);
+    return t;
+  };
+  const bool is_rigid = mat.kind == MaterialKind::Rigid;
+  const Tilted self = tilted(body);
+  std::vector<Tilted> rigid_shapes;
+  if (!is_rigid)
+    for (const BodySpec& b : scene.bodies)
+      if (materials[b.material_index].kind == MaterialKind::Rigid) rigid_shapes.push_back(tilted(b));
+  auto in_rigid = [&](const Eigen::Matrix<double, dim, 1>& x) {
+    for (const Tilted& t : rigid_shapes) {
+      const Vec<dim> u = t.pivot + t.R.transpose() * (x.template cast<Real>() - t.pivot);
+      if (t.shape.contains(u.template cast<double>())) return true;
+    }
+    return false;
+  };
   // Lattice columns along the vertical axis (the last), one at a time, so each column's top is known.
   constexpr int up = vertical_axis<dim>;
   IVec<dim> k = lo;
@@ -112,7 +142,7 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
     for (k[up] = lo[up]; k[up] <= hi[up]; ++k[up]) {
       Eigen::Matrix<double, dim, 1> x;
       for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h;
-      if (filled(x)) column.push_back(x);
+      if (filled(x) && !in_rigid(x)) column.push_back(x);
     }
     // Ice: depth below the body's own top surface in this column (a sloping slab); water: below the level.
     const double top = column.empty() ? 0 : column.back()[up] + 0.5 * h;
@@ -121,7 +151,7 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
       Real J = 1;
       Mat<dim> F = Mat<dim>::Identity();
       const Real pressure = static_cast<Real>(mat.density * g * std::max(0.0, level - x[up]));
-      if (mat.kind == MaterialKind::Water && body.hydrostatic && g > 0) {
+      if (mat.kind != MaterialKind::Ice && body.hydrostatic && g > 0) {
         J = mat.water.volume_ratio_at_pressure(pressure);
       } else if (mat.kind == MaterialKind::Ice && body.hydrostatic && g > 0) {
         const Vec<dim> st = mat.ice.elastic.template uniaxial_vertical_stretches<dim>(-pressure);
@@ -130,7 +160,8 @@ void Simulation<dim>::seed_body(const BodySpec& body) {
       }
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
       const Real V0 = static_cast<Real>(vol) / J;
-      const Vec<dim> xp = x.template cast<Real>();
+      Vec<dim> xp = x.template cast<Real>();
+      if (is_rigid) xp = self.pivot + self.R * (xp - self.pivot);
       const Vec<dim> vp = v0 + G * (xp - centre);
       if (mat.kind == MaterialKind::Ice)
         particles.add_solid(xp, vp, mat.density * V0, J, static_cast<MaterialId>(body.material_index), G, F,
@@ -197,11 +228,23 @@ void Simulation<dim>::step(Real dt) {
   // of a wall and an obstacle, reads its mirror after that mirror has itself been unfolded.
   for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(grid);
   // g2p, then each particle's constitutive update, advection and return inside the walls, done per particle
-  // while its state is in cache (the same as three passes over the particles, in one).
+  // while its state is in cache (the same as three passes over the particles, in one). Rigid particles are
+  // left to the rigid bodies: their velocities are projected onto the bodies' motion (which needs every
+  // particle of a body) and they are moved rigidly.
   g2p(particles, grid, bins_, [&](size_t q) {
+    if (materials[particles.material[q]].kind == MaterialKind::Rigid) return;
     constitutive_update(particles, materials, q, dt);
     for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
   });
+  if (!rigid.bodies.empty()) {
+    rigid.project(particles, time, dt, grid.dx);
+    rigid.advance(particles, dt);
+    const size_t n = particles.size();
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < n; ++q)
+      if (materials[particles.material[q]].kind == MaterialKind::Rigid)
+        for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
+  }
   remove_sunk_particles();
   update_speeds();
   time += dt;

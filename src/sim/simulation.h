@@ -2,7 +2,8 @@
 //
 // One step (symplectic Euler, Jiang et al. 2016 course notes, sec. 9), data flowing one way:
 //   particles --p2g--> grid --wall folding, grid_update + boundary conditions--> grid --g2p--> particles
-//   --constitutive_update--> particles --sinks--> particles (those inside a sink are removed)
+//   --rigid projection--> particles --constitutive_update, rigid motion--> particles --sinks--> particles
+// (rigid bodies: sim/rigid_bodies.h; sinks remove the particles inside them)
 // The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, viscous limit, max_dt), where c_max is
 // the largest wave speed of any material present (acoustic speed of water in its current state).
 #pragma once
@@ -18,6 +19,7 @@
 #include "grid/particle_bins.h"
 #include "material/material.h"
 #include "scene/scene.h"
+#include "sim/rigid_bodies.h"
 
 namespace cdmpm {
 
@@ -40,6 +42,7 @@ class Simulation {
   Grid<dim> grid;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Boundary<dim>>> boundaries;
+  RigidBodies<dim> rigid;
   Vec<dim> gravity, domain_size;
   double time = 0;
   long long steps = 0;

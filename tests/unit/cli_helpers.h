@@ -57,6 +57,26 @@ inline CliResult run_cdmpm(const std::vector<std::string>& args) {
   return r;
 }
 
+// Runs `scene` with the arguments `common` three ways, for a bitwise comparison: into dir/full to t_end on
+// `threads` threads, into dir/other to t_end on `other_threads`, and into dir/half to t_half, then resumed there
+// to t_end on `threads`. Returns the first failing run's output, or "" if all three exit with 0.
+inline std::string run_straight_other_threads_and_resumed(const TempDir& dir, const std::string& scene,
+                                                          const std::vector<std::string>& common,
+                                                          const std::string& threads, const std::string& other_threads,
+                                                          const std::string& t_half, const std::string& t_end) {
+  auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
+  const std::vector<std::vector<std::string>> runs = {
+      {"run", scene, "--out", dir / "full", "--threads", threads, "--set", "time.end=" + t_end},
+      {"run", scene, "--out", dir / "other", "--threads", other_threads, "--set", "time.end=" + t_end},
+      {"run", scene, "--out", dir / "half", "--threads", threads, "--set", "time.end=" + t_half},
+      {"run", scene, "--resume", dir / "half", "--threads", threads, "--set", "time.end=" + t_end}};
+  for (const auto& a : runs) {
+    const CliResult r = run_cdmpm(args(a));
+    if (r.exit_code != 0) return r.output.empty() ? "exit code " + std::to_string(r.exit_code) : r.output;
+  }
+  return "";
+}
+
 // probes.csv as column name -> values.
 inline std::map<std::string, std::vector<double>> read_probes(const std::string& path) {
   std::ifstream in(path);

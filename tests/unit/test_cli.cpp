@@ -114,20 +114,13 @@ TEST(Cli, IceResumeAndThreadCountGiveBitwiseIdenticalState) {
   const std::vector<std::string> common = {"--quiet", "--set", "parameters.cells_per_H=8", "--set",
                                            "parameters.push_speed=20", "--set", "parameters.push_ramp=5", "--set",
                                            "output.icebergs.stop_after_first=1000"};
-  auto args = [&](std::vector<std::string> a) { a.insert(a.end(), common.begin(), common.end()); return a; };
-  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full", "--threads", "2", "--set", "time.end=16"}));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--out", dir / "one", "--threads", "1", "--set", "time.end=16"}));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--out", dir / "half", "--threads", "2", "--set", "time.end=8"}));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_cdmpm(args({"run", scene, "--resume", dir / "half", "--threads", "2", "--set", "time.end=16"}));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string failed = run_straight_other_threads_and_resumed(dir, scene, common, "2", "1", "8", "16");
+  ASSERT_EQ(failed, "");
   expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "half/checkpoint.bin");
-  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "one/checkpoint.bin");
+  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "other/checkpoint.bin");
   for (const char* f : {"probes.csv", "icebergs.csv"}) {
     EXPECT_EQ(read_bytes(dir / ("full/" + std::string(f))), read_bytes(dir / ("half/" + std::string(f)))) << f;
-    EXPECT_EQ(read_bytes(dir / ("full/" + std::string(f))), read_bytes(dir / ("one/" + std::string(f)))) << f;
+    EXPECT_EQ(read_bytes(dir / ("full/" + std::string(f))), read_bytes(dir / ("other/" + std::string(f)))) << f;
   }
   const auto full = read_json(dir / "full/summary.json");
   EXPECT_EQ(read_json(dir / "half/summary.json")["first_iceberg"], full["first_iceberg"]);

@@ -95,15 +95,15 @@ TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
   EXPECT_EQ(back.alpha, sim.particles.alpha);
   EXPECT_EQ(back.x, sim.particles.x);
 
-  // A checkpoint of the previous format (with the reference volume) names both formats.
-  std::ofstream(dir / "old.bin", std::ios::binary) << "CDMPMCK3" << std::string(64, '\0');
+  // A checkpoint of the previous format (reference volume stored, no rigid bodies) names both formats.
+  std::ofstream(dir / "old.bin", std::ios::binary) << "CDMPMCK4" << std::string(64, '\0');
   try {
     read_checkpoint(dir / "old.bin", back);
     FAIL() << "an old-format checkpoint was read";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("CDMPMCK3"), std::string::npos) << what;
     EXPECT_NE(what.find("CDMPMCK4"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK5"), std::string::npos) << what;
     EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
   }
 }

@@ -1,0 +1,266 @@
+// rigid_bodies.h - rigid bodies made of material points, coupled to the other materials through the shared grid.
+//
+// Each rigid body is the set of particles of one rigid material (scene material type "rigid"; the loader lets a
+// rigid material make only one body). Its particles carry mass, momentum and a penalty pressure (below) to the
+// grid like any other particle, so the body and the water share the velocity of every node they both touch
+// (no slip). After each grid-to-particle transfer, project() replaces their velocities by the rigid motion that
+// has the same linear and angular momentum:
+//   v_p = V + omega x (x_p - x_c),   C_p = [omega]_x (the skew matrix of omega, the rigid velocity gradient),
+//   V = P / M,  P = sum_p m_p v_p,  M = sum_p m_p,  x_c = sum_p m_p x_p / M,
+//   omega = I^-1 L,  L = sum_p [ m_p r_p x v_p + m_p D axial(C_p - C_p^T) ],  r_p = x_p - x_c,
+//   I = sum_p m_p [ (|r_p|^2 + 2 D) 1 - r_p r_p^T ]   (2D: I and L are scalars, I = sum_p m_p (|r_p|^2 + 2 D)).
+// The terms with D = dx^2/4 (the APIC inertia tensor of quadratic B-splines, Jiang et al. 2015, sec. 5.3) are
+// the angular momentum and inertia that a particle's affine velocity C_p carries to the grid: with them the
+// projection keeps exactly the angular momentum that p2g/g2p exchange with the water.
+// A hinged body turns about its fixed pivot o only: v_p = omega x (x_p - o), omega = I_o^-1 L_o with L and I
+// taken about o (the pivot's reaction changes the linear momentum, not the angular momentum about o).
+// A held body (time < hold_until) is at rest: v_p = 0, C_p = 0.
+// Before its C_p is replaced, each particle's volume ratio follows the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
+// so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
+// pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
+// (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
+// expansion. (Known limit, docs/validation.md: through the shared nodes the body drags the water next to it,
+// which slows buoyancy-driven motions at coarse resolution. A pressure taken instead from the water around the
+// body, continuous across its surface, fed back on the water it compressed and made a surfacing body unstable.)
+// advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
+//   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
+// so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity
+// field with it: omega <- I'^-1 L with the turned inertia I' = R I R^T (torque-free, L unchanged; in 2D omega is
+// unchanged) and v_p, C_p set from it at the new positions. Without this last step the particles would carry
+// the velocities of their old positions, and each step would lose (omega dt)^2 / 2 of the angular momentum.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/particles.h"
+#include "material/material.h"
+#include "scene/scene.h"
+
+namespace cdmpm {
+
+template <int dim>
+struct RigidBody {
+  static constexpr int rot = dim == 2 ? 1 : 3;  // components of an angular velocity
+  using Spin = Eigen::Matrix<Real, rot, 1>;
+  // Set-up (from the scene).
+  int material = -1;         // the body is the particles of this material
+  double hold_until = 0;     // at rest until this time [s]
+  bool hinged = false;
+  Vec<dim> pivot = Vec<dim>::Zero();
+  // State.
+  double mass = 0;
+  Vec<dim> centre = Vec<dim>::Zero();    // centre of mass [m]
+  Vec<dim> velocity = Vec<dim>::Zero();  // velocity of the centre of mass [m/s]
+  Spin omega = Spin::Zero();             // angular velocity [rad/s] (2D: counter-clockwise)
+  Mat<dim> rotation = Mat<dim>::Identity();  // orientation relative to the untilted shape
+  Eigen::Matrix<Real, rot, rot> inertia = Eigen::Matrix<Real, rot, rot>::Identity();  // about the centre or pivot
+                                                                                      // (set by each projection)
+  double angle = 0;  // 2D: counter-clockwise angle from the untilted shape [rad], not wrapped; 3D: angle of `rotation`
+};
+
+// Small helpers shared by the projection and the seeding: 2D angular quantities are 1-vectors.
+template <int dim>
+struct RigidAlgebra {
+  using Spin = typename RigidBody<dim>::Spin;
+  using Inertia = Eigen::Matrix<Real, RigidBody<dim>::rot, RigidBody<dim>::rot>;
+  static Spin cross(const Vec<dim>& r, const Vec<dim>& v) {
+    if constexpr (dim == 2) return Spin(r[0] * v[1] - r[1] * v[0]);
+    else return r.cross(v);
+  }
+  static Vec<dim> spin_cross(const Spin& w, const Vec<dim>& r) {
+    if constexpr (dim == 2) return Vec<dim>(-w[0] * r[1], w[0] * r[0]);
+    else return w.cross(r);
+  }
+  static Mat<dim> skew(const Spin& w) {
+    Mat<dim> S;
+    if constexpr (dim == 2) S << 0, -w[0], w[0], 0;
+    else S << 0, -w[2], w[1], w[2], 0, -w[0], -w[1], w[0], 0;
+    return S;
+  }
+  // axial(C - C^T): 2 omega when C = skew(omega).
+  static Spin axial2(const Mat<dim>& C) {
+    if constexpr (dim == 2) return Spin(C(1, 0) - C(0, 1));
+    else return Spin(C(2, 1) - C(1, 2), C(0, 2) - C(2, 0), C(1, 0) - C(0, 1));
+  }
+  // Inertia of mass m at offset r from the axis point, plus its APIC self-inertia 2 m D.
+  static Inertia inertia(Real m, const Vec<dim>& r, Real D) {
+    if constexpr (dim == 2) return Inertia(m * (r.squaredNorm() + 2 * D));
+    else return m * ((r.squaredNorm() + 2 * D) * Inertia::Identity() - r * r.transpose());
+  }
+  // Rotation by the rotation vector w t (2D: angle w t counter-clockwise).
+  static Mat<dim> rotation(const Spin& w, Real t) {
+    if constexpr (dim == 2) return Eigen::Rotation2D<Real>(w[0] * t).toRotationMatrix();
+    else {
+      const Real a = w.norm() * t;
+      return a == 0 ? Mat<dim>::Identity() : Eigen::AngleAxis<Real>(a, w.normalized()).toRotationMatrix();
+    }
+  }
+  // The scene's tilt [degrees] as a rotation turning +x towards the vertical axis.
+  static Mat<dim> tilt(double degrees) {
+    const Real a = static_cast<Real>(degrees * std::numbers::pi / 180);
+    Mat<dim> R = Mat<dim>::Identity();
+    R(0, 0) = R(dim - 1, dim - 1) = std::cos(a);
+    R(dim - 1, 0) = std::sin(a);
+    R(0, dim - 1) = -std::sin(a);
+    return R;
+  }
+};
+
+template <int dim>
+class RigidBodies {
+ public:
+  using A = RigidAlgebra<dim>;
+  std::vector<RigidBody<dim>> bodies;
+
+  // One body per rigid body in the scene, with its initial state measured from the seeded particles; its
+  // particles' velocities are projected (held bodies set at rest) so the state is consistent from t = 0.
+  void init(const Scene& scene, const std::vector<Material>& materials, Particles<dim>& p, Real dx) {
+    bodies.clear();
+    body_of_.assign(materials.size(), -1);
+    for (const BodySpec& b : scene.bodies) {
+      if (materials[b.material_index].kind != MaterialKind::Rigid) continue;
+      RigidBody<dim> body;
+      body.material = b.material_index;
+      body.hold_until = b.hold_until;
+      body.hinged = !b.hinge.empty();
+      for (int a = 0; a < dim && body.hinged; ++a) body.pivot[a] = static_cast<Real>(b.hinge[a]);
+      body.rotation = A::tilt(b.tilt);
+      body.angle = b.tilt * std::numbers::pi / 180;
+      body_of_[b.material_index] = static_cast<int>(bodies.size());
+      bodies.push_back(body);
+    }
+    project(p, 0.0, 0, dx);
+  }
+
+  // Index into `bodies` of the body made of `material`, -1 if that material is not rigid.
+  int index_of_material(int material) const { return body_of_[material]; }
+
+  // After g2p at time `time`: replaces the rigid particles' v and C by their bodies' rigid motion.
+  void project(Particles<dim>& p, double time, Real dt, Real dx) {
+    if (bodies.empty()) return;
+    const Real D = dx * dx / 4;
+    const size_t n = p.size(), nb = bodies.size();
+    const std::vector<int>& body_of = body_of_;
+    // Pass 1: mass, centre of mass and momentum (serial: sums independent of the thread count).
+    std::vector<double> mass(nb, 0.0);
+    std::vector<Vec<dim>> first(nb, Vec<dim>::Zero()), momentum(nb, Vec<dim>::Zero());
+    for (size_t q = 0; q < n; ++q) {
+      const int b = body_of[p.material[q]];
+      if (b < 0) continue;
+      mass[b] += p.mass[q];
+      first[b] += p.mass[q] * p.x[q];
+      momentum[b] += p.mass[q] * p.v[q];
+    }
+    std::vector<Vec<dim>> origin(nb);
+    for (size_t b = 0; b < nb; ++b) {
+      bodies[b].mass = mass[b];
+      bodies[b].centre = first[b] / static_cast<Real>(mass[b]);
+      origin[b] = bodies[b].hinged ? bodies[b].pivot : bodies[b].centre;
+    }
+    // Pass 2: angular momentum and inertia about the body's origin (centre of mass or pivot).
+    std::vector<typename A::Spin> L(nb, A::Spin::Zero());
+    std::vector<typename A::Inertia> I(nb, A::Inertia::Zero());
+    for (size_t q = 0; q < n; ++q) {
+      const int b = body_of[p.material[q]];
+      if (b < 0) continue;
+      const Vec<dim> r = p.x[q] - origin[b];
+      L[b] += p.mass[q] * (A::cross(r, p.v[q]) + D * A::axial2(p.C[q]));
+      I[b] += A::inertia(p.mass[q], r, D);
+    }
+    for (size_t b = 0; b < nb; ++b) {
+      RigidBody<dim>& B = bodies[b];
+      B.inertia = I[b];
+      if (time < B.hold_until) {
+        B.velocity.setZero();
+        B.omega.setZero();
+        continue;
+      }
+      B.omega = I[b].ldlt().solve(L[b]);
+      B.velocity = B.hinged ? A::spin_cross(B.omega, B.centre - B.pivot) : Vec<dim>(momentum[b] / static_cast<Real>(mass[b]));
+    }
+    // Pass 3: impose the rigid motion.
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < n; ++q) {
+      const int b = body_of[p.material[q]];
+      if (b < 0) continue;
+      const RigidBody<dim>& B = bodies[b];
+      p.J[q] = std::min(Real(1), p.J[q] * (Real(1) + dt * p.C[q].trace()));
+      p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
+      p.C[q] = A::skew(B.omega);
+    }
+  }
+
+  // Moves the rigid particles and the bodies' state rigidly over dt with the velocities set by project(), and
+  // sets the particles' velocities to the body's at their new positions.
+  void advance(Particles<dim>& p, Real dt) {
+    if (bodies.empty()) return;
+    const std::vector<int>& body_of = body_of_;
+    std::vector<Mat<dim>> R(bodies.size());
+    std::vector<Vec<dim>> origin(bodies.size()), shift(bodies.size());
+    for (size_t b = 0; b < bodies.size(); ++b) {
+      RigidBody<dim>& B = bodies[b];
+      R[b] = A::rotation(B.omega, dt);
+      origin[b] = B.hinged ? B.pivot : B.centre;
+      shift[b] = B.hinged ? Vec<dim>::Zero() : Vec<dim>(dt * B.velocity);
+      B.centre = origin[b] + shift[b] + R[b] * (B.centre - origin[b]);
+      B.rotation = R[b] * B.rotation;
+      if constexpr (dim == 2) {
+        B.angle += static_cast<double>(B.omega[0] * dt);
+      } else {
+        B.angle = Eigen::AngleAxis<Real>(B.rotation).angle();
+        const typename A::Spin L = B.inertia * B.omega;
+        B.inertia = R[b] * B.inertia * R[b].transpose();
+        B.omega = B.inertia.ldlt().solve(L);
+      }
+      if (B.hinged) B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
+    }
+    const size_t n = p.size();
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < n; ++q) {
+      const int b = body_of[p.material[q]];
+      if (b < 0) continue;
+      const RigidBody<dim>& B = bodies[b];
+      p.x[q] = origin[b] + shift[b] + R[b] * (p.x[q] - origin[b]);
+      p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
+      p.C[q] = A::skew(B.omega);
+    }
+  }
+
+  // The state as numbers (checkpoints): per body mass, centre, velocity, omega, rotation, angle.
+  std::vector<double> save() const {
+    std::vector<double> out;
+    for (const auto& B : bodies) {
+      out.push_back(B.mass);
+      for (int a = 0; a < dim; ++a) out.push_back(B.centre[a]);
+      for (int a = 0; a < dim; ++a) out.push_back(B.velocity[a]);
+      for (int a = 0; a < RigidBody<dim>::rot; ++a) out.push_back(B.omega[a]);
+      for (int k = 0; k < dim * dim; ++k) out.push_back(B.rotation(k));
+      out.push_back(B.angle);
+    }
+    return out;
+  }
+  static constexpr size_t saved_per_body = 1 + 2 * dim + RigidBody<dim>::rot + dim * dim + 1;
+  // Returns false if `state` does not hold one record per body.
+  bool load(const std::vector<double>& state) {
+    if (state.size() != bodies.size() * saved_per_body) return false;
+    size_t i = 0;
+    for (auto& B : bodies) {
+      B.mass = state[i++];
+      for (int a = 0; a < dim; ++a) B.centre[a] = static_cast<Real>(state[i++]);
+      for (int a = 0; a < dim; ++a) B.velocity[a] = static_cast<Real>(state[i++]);
+      for (int a = 0; a < RigidBody<dim>::rot; ++a) B.omega[a] = static_cast<Real>(state[i++]);
+      for (int k = 0; k < dim * dim; ++k) B.rotation(k) = static_cast<Real>(state[i++]);
+      B.angle = state[i++];
+    }
+    return true;
+  }
+
+ private:
+  std::vector<int> body_of_;  // per material: index of its body in `bodies`, -1 if not rigid
+};
+
+}  // namespace cdmpm
