@@ -68,7 +68,8 @@ inline Real particle_stiffening(const Material& m, const Particles<dim>& p, size
 template <int dim>
 inline Real wave_speed_at_stiffening(const Material& m, Real s) {
   switch (m.kind) {
-    case MaterialKind::Water: return m.water.wave_speed(Real(1) / s);
+    case MaterialKind::Water:
+    case MaterialKind::Rigid: return m.water.wave_speed(Real(1) / s);  // a rigid body's contact pressure law
     case MaterialKind::Ice: return s * std::sqrt(m.ice.elastic.p_wave_modulus<dim>() / m.density);
   }
   return 0;
