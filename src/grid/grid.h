@@ -53,7 +53,6 @@ struct Grid {
 
   // Nodes held in storage (active blocks x block_nodes); storage index k runs over [0, node_count()).
   size_t node_count() const { return active_.size() * block_nodes; }
-  size_t active_block_count() const { return active_.size(); }
   // Blocks of the whole lattice.
   size_t block_count() const {
     size_t n = 1;
@@ -97,8 +96,17 @@ struct Grid {
     const int32_t s = slot_[block];
     return s < 0 ? npos : static_cast<size_t>(s) * block_nodes;
   }
-  // Storage index of node i, which must lie in an active block.
-  size_t index(const IVec<dim>& i) const { return block_storage(block_index(block_of(i))) + local_index(i); }
+  // Block index of the neighbour c + offset of block coordinates c, where bit (dim - 1 - a) of m is the offset
+  // (0 or 1) along axis a; npos if that neighbour is off the lattice. m = 0 .. 2^dim - 1 runs over the blocks
+  // that the stencils of block c's particles touch.
+  size_t upper_neighbour(const IVec<dim>& c, int m) const {
+    IVec<dim> d = c;
+    for (int a = 0; a < dim; ++a) {
+      d[a] += (m >> (dim - 1 - a)) & 1;
+      if (d[a] >= n_blocks[a]) return npos;
+    }
+    return block_index(d);
+  }
   // Storage index of node i, or npos if it is off the lattice or its block is not active.
   size_t find(const IVec<dim>& i) const {
     for (int a = 0; a < dim; ++a)
@@ -173,14 +181,8 @@ struct Grid {
     for (const uint32_t b : particle_blocks) {
       const IVec<dim> c = block_coords(b);
       for (int m = 0; m < (1 << dim); ++m) {
-        IVec<dim> d = c;
-        bool inside = true;
-        for (int a = 0; a < dim; ++a) {
-          d[a] += (m >> (dim - 1 - a)) & 1;
-          inside = inside && d[a] < n_blocks[a];
-        }
-        if (!inside) continue;
-        const size_t nb = block_index(d);
+        const size_t nb = upper_neighbour(c, m);
+        if (nb == npos) continue;
         if (slot_[nb] < 0) {
           slot_[nb] = 0;
           active_.push_back(static_cast<uint32_t>(nb));

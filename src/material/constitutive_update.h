@@ -32,12 +32,4 @@ inline void constitutive_update(Particles<dim>& p, const std::vector<Material>& 
   p.x[q] += dt * p.v[q];
 }
 
-// Every particle.
-template <int dim>
-void constitutive_update(Particles<dim>& p, const std::vector<Material>& materials, Real dt) {
-  const size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (size_t q = 0; q < n; ++q) constitutive_update(p, materials, q, dt);
-}
-
 }  // namespace cdmpm

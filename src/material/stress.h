@@ -74,9 +74,5 @@ inline Real wave_speed_at_stiffening(const Material& m, Real s) {
   }
   return 0;
 }
-template <int dim>
-inline Real particle_wave_speed(const Material& m, const Particles<dim>& p, size_t q) {
-  return wave_speed_at_stiffening<dim>(m, particle_stiffening(m, p, q));
-}
 
 }  // namespace cdmpm

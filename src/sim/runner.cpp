@@ -248,8 +248,9 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   // the stepping rate (frames, probes and checkpoints written during the run are included).
   s["setup_wall_time"] = setup_wall;
   s["stepping_particle_steps_per_second"] = particle_steps / std::max(loop_end_wall - setup_wall, 1e-9);
-  s["peak_memory_bytes"] = peak_rss_bytes();
-  s["bytes_per_particle"] = peak_rss_bytes() / std::max<double>(1, double(sim.particles.size()));
+  const double peak_memory = peak_rss_bytes();
+  s["peak_memory_bytes"] = peak_memory;
+  s["bytes_per_particle"] = peak_memory / std::max<double>(1, double(sim.particles.size()));
   s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
   s["energy"] = {{"kinetic", e1.kinetic}, {"gravitational", e1.gravitational}, {"elastic", e1.elastic}, {"total", e1.total()}};
   s["energy_initial"] = {{"kinetic", e0.kinetic}, {"gravitational", e0.gravitational}, {"elastic", e0.elastic}, {"total", e0.total()}};

@@ -231,10 +231,14 @@ void Simulation<dim>::step(Real dt) {
   // while its state is in cache (the same as three passes over the particles, in one). Rigid particles are
   // left to the rigid bodies: their velocities are projected onto the bodies' motion (which needs every
   // particle of a body) and they are moved rigidly.
-  g2p(particles, grid, bins_, [&](size_t q) {
-    if (materials[particles.material[q]].kind == MaterialKind::Rigid) return;
-    constitutive_update(particles, materials, q, dt);
+  auto keep_inside = [&](size_t q) {
     for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
+  };
+  auto is_rigid = [&](size_t q) { return materials[particles.material[q]].kind == MaterialKind::Rigid; };
+  g2p(particles, grid, bins_, [&](size_t q) {
+    if (is_rigid(q)) return;
+    constitutive_update(particles, materials, q, dt);
+    keep_inside(q);
   });
   if (!rigid.bodies.empty()) {
     rigid.project(particles, time, dt, grid.dx);
@@ -242,8 +246,7 @@ void Simulation<dim>::step(Real dt) {
     const size_t n = particles.size();
 #pragma omp parallel for schedule(static)
     for (size_t q = 0; q < n; ++q)
-      if (materials[particles.material[q]].kind == MaterialKind::Rigid)
-        for (const auto& b : boundaries) b->keep_inside(particles.x[q]);
+      if (is_rigid(q)) keep_inside(q);
   }
   remove_sunk_particles();
   update_speeds();

@@ -28,13 +28,8 @@ struct BlockPatch {
     const IVec<dim> c = g.block_coords(block);
     origin = c * Grid<dim>::block_width - IVec<dim>::Constant(Grid<dim>::ghost);
     for (int m = 0; m < (1 << dim); ++m) {
-      IVec<dim> d = c;
-      bool inside = true;
-      for (int a = 0; a < dim; ++a) {
-        d[a] += (m >> (dim - 1 - a)) & 1;
-        inside = inside && d[a] < g.n_blocks[a];
-      }
-      store[m] = inside ? g.block_storage(g.block_index(d)) : Grid<dim>::npos;
+      const size_t nb = g.upper_neighbour(c, m);
+      store[m] = nb == Grid<dim>::npos ? Grid<dim>::npos : g.block_storage(nb);
     }
   }
 
@@ -44,7 +39,6 @@ struct BlockPatch {
     for (int a = 0; a < dim; ++a) k = k * width + (s.base[a] - origin[a]);
     return k;
   }
-  static constexpr int stride(int axis) { return axis == dim - 1 ? 1 : (axis == dim - 2 ? width : width * width); }
 
   // Calls f(patch_index, storage_index) for every patch node that lies on the lattice.
   template <class F>
