@@ -45,7 +45,7 @@ void unfold_pair(Grid<dim>& g, size_t src, size_t dst, int axis) {
 template <int dim>
 class Walls final : public Boundary<dim> {
  public:
-  Walls(const BoundarySpec& s, const Vec<dim>& size) : Boundary<dim>(s.condition, s.friction), size_(size) {
+  Walls(const BoundarySpec& s, const Vec<dim>& size, Real dx) : Boundary<dim>(s.condition, s.friction, dx), size_(size) {
     static const char* names[3] = {"x", "y", "z"};
     for (int a = 0; a < dim; ++a)
       for (int side = 0; side < 2; ++side) {
@@ -90,8 +90,8 @@ class Walls final : public Boundary<dim> {
   }
   void apply(const Vec<dim>& x, Vec<dim>& v) const override {
     for (int a = 0; a < dim; ++a) {
-      if (on_[a][0] && x[a] <= 0) apply_condition<dim>(this->condition_, this->friction_, Vec<dim>::Unit(a), v);
-      if (on_[a][1] && x[a] >= size_[a]) apply_condition<dim>(this->condition_, this->friction_, -Vec<dim>::Unit(a), v);
+      if (on_[a][0] && x[a] <= this->tol_) apply_condition<dim>(this->condition_, this->friction_, Vec<dim>::Unit(a), v);
+      if (on_[a][1] && x[a] >= size_[a] - this->tol_) apply_condition<dim>(this->condition_, this->friction_, -Vec<dim>::Unit(a), v);
     }
   }
 
@@ -103,10 +103,10 @@ class Walls final : public Boundary<dim> {
 template <int dim>
 class HalfPlane final : public Boundary<dim> {
  public:
-  explicit HalfPlane(const BoundarySpec& s)
-      : Boundary<dim>(s.condition, s.friction), point_(to_vec<dim>(s.point)), normal_(to_vec<dim>(s.normal).normalized()) {}
+  HalfPlane(const BoundarySpec& s, Real dx)
+      : Boundary<dim>(s.condition, s.friction, dx), point_(to_vec<dim>(s.point)), normal_(to_vec<dim>(s.normal).normalized()) {}
   void apply(const Vec<dim>& x, Vec<dim>& v) const override {
-    if ((x - point_).dot(normal_) <= 0) apply_condition<dim>(this->condition_, this->friction_, normal_, v);
+    if ((x - point_).dot(normal_) <= this->tol_) apply_condition<dim>(this->condition_, this->friction_, normal_, v);
   }
 
  private:
@@ -119,8 +119,8 @@ class HalfPlane final : public Boundary<dim> {
 template <int dim>
 class BoxObstacle final : public Boundary<dim> {
  public:
-  BoxObstacle(const BoundarySpec& s, const Vec<dim>& domain_size)
-      : Boundary<dim>(s.condition, s.friction), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
+  BoxObstacle(const BoundarySpec& s, const Vec<dim>& domain_size, Real dx)
+      : Boundary<dim>(s.condition, s.friction, dx), min0_(to_vec<dim>(s.min)), max0_(to_vec<dim>(s.max)),
         final_velocity_(s.velocity.empty() ? Vec<dim>::Zero().eval() : to_vec<dim>(s.velocity)), ramp_(s.ramp_time),
         velocity_(ramp_ > 0 ? Vec<dim>::Zero().eval() : final_velocity_), min_(min0_), max_(max0_) {
     // A face on or beyond the domain boundary has no material side: it is not a face of the obstacle.
@@ -140,10 +140,10 @@ class BoxObstacle final : public Boundary<dim> {
     for (int a = 0; a < dim; ++a) {
       lo[a] = x[a] - min_[a];
       hi[a] = max_[a] - x[a];
-      if (lo[a] < 0 || hi[a] < 0) return;
+      if (lo[a] < -this->tol_ || hi[a] < -this->tol_) return;
     }
     const Real best = std::min(lo.minCoeff(), hi.minCoeff());
-    const Real tie = best + Real(1e-9) * (Real(1) + x.cwiseAbs().maxCoeff());
+    const Real tie = best + this->tol_;
     // The nearest face gives the normal; a node on an edge or corner (equally near several faces) gets the
     // condition of each, so a corner supports the material in both directions.
     Vec<dim> relative = v - velocity_;
@@ -257,7 +257,7 @@ class BoxObstacle final : public Boundary<dim> {
 // 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
 class Bathymetry2D final : public Boundary<2> {
  public:
-  explicit Bathymetry2D(const BoundarySpec& s) : Boundary<2>(s.condition, s.friction), pts_(s.points) {}
+  Bathymetry2D(const BoundarySpec& s, Real dx) : Boundary<2>(s.condition, s.friction, dx), pts_(s.points) {}
   void apply(const Vec<2>& x, Vec<2>& v) const override {
     Real h, slope = 0;
     if (x[0] <= pts_.front()[0]) h = static_cast<Real>(pts_.front()[1]);
@@ -270,7 +270,7 @@ class Bathymetry2D final : public Boundary<2> {
       slope = static_cast<Real>((b[1] - a[1]) / (b[0] - a[0]));
       h = static_cast<Real>(a[1]) + slope * (x[0] - static_cast<Real>(a[0]));
     }
-    if (x[1] <= h) apply_condition<2>(condition_, friction_, Vec<2>(-slope, 1).normalized(), v);
+    if (x[1] <= h + tol_) apply_condition<2>(condition_, friction_, Vec<2>(-slope, 1).normalized(), v);
   }
 
  private:
@@ -280,8 +280,8 @@ class Bathymetry2D final : public Boundary<2> {
 // 3D bathymetry: solid below a bilinearly interpolated height field z = h(x, y), clamped at its edges.
 class HeightField3D final : public Boundary<3> {
  public:
-  explicit HeightField3D(const BoundarySpec& s)
-      : Boundary<3>(s.condition, s.friction), ox_(s.origin[0]), oy_(s.origin[1]), sx_(s.spacing[0]), sy_(s.spacing[1]),
+  HeightField3D(const BoundarySpec& s, Real dx)
+      : Boundary<3>(s.condition, s.friction, dx), ox_(s.origin[0]), oy_(s.origin[1]), sx_(s.spacing[0]), sy_(s.spacing[1]),
         h_(s.heights) {}
   void apply(const Vec<3>& x, Vec<3>& v) const override {
     const int nx = static_cast<int>(h_[0].size()), ny = static_cast<int>(h_.size());
@@ -290,7 +290,7 @@ class HeightField3D final : public Boundary<3> {
     const double fu = u - i, fw = w - j;
     const double h00 = h_[j][i], h10 = h_[j][i + 1], h01 = h_[j + 1][i], h11 = h_[j + 1][i + 1];
     const double h = (1 - fw) * ((1 - fu) * h00 + fu * h10) + fw * ((1 - fu) * h01 + fu * h11);
-    if (x[2] > h) return;
+    if (x[2] > h + tol_) return;
     const double dhdx = ((1 - fw) * (h10 - h00) + fw * (h11 - h01)) / sx_;
     const double dhdy = ((1 - fu) * (h01 - h00) + fu * (h11 - h10)) / sy_;
     apply_condition<3>(condition_, friction_, Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized(), v);
@@ -304,18 +304,18 @@ class HeightField3D final : public Boundary<3> {
 }  // namespace
 
 template <int dim>
-std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& s, const Vec<dim>& domain_size) {
-  if (s.type == "walls") return std::make_unique<Walls<dim>>(s, domain_size);
-  if (s.type == "half_plane") return std::make_unique<HalfPlane<dim>>(s);
-  if (s.type == "box") return std::make_unique<BoxObstacle<dim>>(s, domain_size);
+std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& s, const Vec<dim>& domain_size, Real dx) {
+  if (s.type == "walls") return std::make_unique<Walls<dim>>(s, domain_size, dx);
+  if (s.type == "half_plane") return std::make_unique<HalfPlane<dim>>(s, dx);
+  if (s.type == "box") return std::make_unique<BoxObstacle<dim>>(s, domain_size, dx);
   if (s.type == "bathymetry") {
-    if constexpr (dim == 2) return std::make_unique<Bathymetry2D>(s);
-    else return std::make_unique<HeightField3D>(s);
+    if constexpr (dim == 2) return std::make_unique<Bathymetry2D>(s, dx);
+    else return std::make_unique<HeightField3D>(s, dx);
   }
   throw std::invalid_argument("unknown boundary type '" + s.type + "'");
 }
 
-template std::unique_ptr<Boundary<2>> make_boundary<2>(const BoundarySpec&, const Vec<2>&);
-template std::unique_ptr<Boundary<3>> make_boundary<3>(const BoundarySpec&, const Vec<3>&);
+template std::unique_ptr<Boundary<2>> make_boundary<2>(const BoundarySpec&, const Vec<2>&, Real);
+template std::unique_ptr<Boundary<3>> make_boundary<3>(const BoundarySpec&, const Vec<3>&, Real);
 
 }  // namespace cdmpm

@@ -24,6 +24,10 @@
 // The same mirror applies at the faces of static slip box obstacles that lie on grid planes (faces on the
 // domain boundary excepted; there the box continues into the wall's ghost layers so the corner of a box
 // and a wall is mirrored consistently). Ghosts are unfolded in the reverse order of folding.
+// A node counts as inside a solid when it lies within node_tolerance(dx) = 1e-3 dx of it, so a face placed on
+// a grid plane holds the nodes on that plane whichever way the rounding of i dx and of the face coordinate goes
+// (a face at x = 9 H with dx = H / 12 lies at 900 m, node 108 at 900.0000000000001 m: without the tolerance the
+// node would be free, and water would flow into the face's cell).
 // After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
 // there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
 // needs every particle on the material side of the wall. On the sparse grid (grid/grid.h) a pair is folded
@@ -61,7 +65,7 @@ inline void apply_condition(BoundaryCondition c, Real friction, const Vec<dim>& 
 template <int dim>
 class Boundary {
  public:
-  Boundary(BoundaryCondition c, Real friction) : condition_(c), friction_(friction) {}
+  Boundary(BoundaryCondition c, Real friction, Real dx) : condition_(c), friction_(friction), tol_(node_tolerance(dx)) {}
   virtual ~Boundary() = default;
   // Applies the condition to velocity v of the node at position x if x is inside the solid.
   virtual void apply(const Vec<dim>& x, Vec<dim>& v) const = 0;
@@ -74,13 +78,18 @@ class Boundary {
   // Keeps a particle position on the material side of the boundary (walls and static slip boxes; see above).
   virtual void keep_inside(Vec<dim>&) const {}
 
+  // Distance within which a grid node counts as on a face (see above).
+  static Real node_tolerance(Real dx) { return Real(1e-3) * dx; }
+
  protected:
   BoundaryCondition condition_;
   Real friction_;
+  Real tol_;  // node_tolerance(dx)
 };
 
-// Builds a boundary from its validated scene description. domain_size: the scene's domain extent.
+// Builds a boundary from its validated scene description. domain_size: the scene's domain extent; dx: the
+// grid spacing.
 template <int dim>
-std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& spec, const Vec<dim>& domain_size);
+std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& spec, const Vec<dim>& domain_size, Real dx);
 
 }  // namespace cdmpm

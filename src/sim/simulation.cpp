@@ -51,7 +51,7 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s) {
     }
     materials.push_back(m);
   }
-  for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(b, domain_size));
+  for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(b, domain_size, grid.dx));
   // Solid bodies first, so that adding their particles is an append (core/particles.h: solids first).
   for (const bool solids : {true, false})
     for (const BodySpec& b : s.bodies)

@@ -1,7 +1,8 @@
 // test_boundary.cpp - boundary conditions on grid nodes (boundary/boundary.h): moving boxes follow their
 // prescribed kinematics (linear velocity ramp, then constant velocity) and impose the condition on the
 // velocity relative to the box; nodes on a box edge or corner get the condition of every nearest face;
-// still water beside a static slip box is as hydrostatic as beside a mirrored domain wall.
+// still water beside a static slip box is as hydrostatic as beside a mirrored domain wall; a node on a face
+// that lies on a grid plane gets the condition despite the rounding of its coordinate.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,7 +27,7 @@ BoundarySpec box(BoundaryCondition c, std::vector<double> velocity = {0, 0}, dou
 }
 
 TEST(BoxObstacle, StickyMovingBoxDragsNodesWithItsRampedVelocity) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Sticky, {2, 0}, 4), Vec<2>(10, 10));
+  auto b = make_boundary<2>(box(BoundaryCondition::Sticky, {2, 0}, 4), Vec<2>(10, 10), Real(0.1));
   // Ramp: u(t) = U t / T, displacement U t^2 / (2 T); after the ramp U (t - T / 2).
   b->move_to(1.0);  // u = 0.5, box spans x in [0.25, 1.25]
   Vec<2> v(7, 7);
@@ -44,7 +45,7 @@ TEST(BoxObstacle, StickyMovingBoxDragsNodesWithItsRampedVelocity) {
 }
 
 TEST(BoxObstacle, SeparateConditionActsOnTheRelativeVelocity) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Separate, {3, 0}), Vec<2>(10, 10));
+  auto b = make_boundary<2>(box(BoundaryCondition::Separate, {3, 0}), Vec<2>(10, 10), Real(0.1));
   b->move_to(0.0);
   // Node on the right face (normal +x), moving into the box relative to it (1 < 3): pushed to the box speed.
   Vec<2> v(1, 0.25);
@@ -58,7 +59,7 @@ TEST(BoxObstacle, SeparateConditionActsOnTheRelativeVelocity) {
 }
 
 TEST(BoxObstacle, CornerNodeIsSupportedByBothFaces) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Separate), Vec<2>(10, 10));
+  auto b = make_boundary<2>(box(BoundaryCondition::Separate), Vec<2>(10, 10), Real(0.1));
   Vec<2> v(-1, -1);  // into the box through its top-right corner
   b->apply(Vec<2>(1.0, 1.0), v);
   EXPECT_EQ(v, Vec<2>(0, 0));
@@ -73,6 +74,33 @@ TEST(BoxObstacle, CornerNodeIsSupportedByBothFaces) {
 // pool; the geometry is mirror-symmetric, so the two sides agree to round-off growth, far below 1 % of
 // rho g h. Without the mirror (or with the corner of box and floor left out of it) the first particle
 // column next to the box settles at about half the hydrostatic pressure.
+// A face placed on a grid plane holds the nodes on that plane, whichever way the rounding of i dx goes: with
+// dx = H / 12 (H = 100 m) the face x = 9 H = 900 m is node 108, computed as 108 dx = 900.0000000000001 in double,
+// and the wall x = 17 H = 1700 m is node 204, 1699.9999 in single precision.
+TEST(BoundaryNodes, NodeOnAFaceOnAGridPlaneGetsTheConditionDespiteRounding) {
+  const Real dx = Real(100.0 / 12.0);
+  BoundarySpec s = box(BoundaryCondition::Sticky);
+  s.min = {0, 0};
+  s.max = {900, 100};
+  auto bed = make_boundary<2>(s, Vec<2>(1700, 275), dx);
+  Vec<2> v(-1, -1);
+  bed->apply(Vec<2>(Real(108) * dx, Real(6) * dx), v);
+  EXPECT_EQ(v, Vec<2>(0, 0));
+  v = Vec<2>(-1, -1);  // one node beyond the face: free
+  bed->apply(Vec<2>(Real(109) * dx, Real(6) * dx), v);
+  EXPECT_EQ(v, Vec<2>(-1, -1));
+  BoundarySpec w;
+  w.type = "walls";
+  w.condition = BoundaryCondition::Slip;
+  auto walls = make_boundary<2>(w, Vec<2>(1700, 275), dx);
+  v = Vec<2>(1, 0.5);
+  walls->apply(Vec<2>(Real(204) * dx, Real(6) * dx), v);
+  EXPECT_EQ(v, Vec<2>(0, 0.5));
+  v = Vec<2>(1, 0.5);  // one node inside: free
+  walls->apply(Vec<2>(Real(203) * dx, Real(6) * dx), v);
+  EXPECT_EQ(v, Vec<2>(1, 0.5));
+}
+
 TEST(BoxObstacle, StillWaterBesideASlipBoxIsAsHydrostaticAsBesideAWall) {
   nlohmann::json j = {
       {"dim", 2},
