@@ -145,42 +145,53 @@ class RigidBodies {
     const Real D = dx * dx / 4;
     const size_t n = p.size(), nb = bodies.size();
     const std::vector<int>& body_of = body_of_;
-    // Pass 1: mass, centre of mass and momentum (serial: sums independent of the thread count).
+    // Pass 1: mass, centre of mass and momentum (serial: sums independent of the thread count). The sums over
+    // a body's particles are accumulated in double, so that a single-precision build keeps the body's momentum
+    // to its own round-off rather than to that of a float sum over thousands of particles.
+    using DVec = Eigen::Matrix<double, dim, 1>;
+    using DSpin = Eigen::Matrix<double, RigidBody<dim>::rot, 1>;
+    using DInertia = Eigen::Matrix<double, RigidBody<dim>::rot, RigidBody<dim>::rot>;
     std::vector<double> mass(nb, 0.0);
-    std::vector<Vec<dim>> first(nb, Vec<dim>::Zero()), momentum(nb, Vec<dim>::Zero());
+    std::vector<DVec> first(nb, DVec::Zero()), momentum(nb, DVec::Zero());
     for (size_t q = 0; q < n; ++q) {
       const int b = body_of[p.material[q]];
       if (b < 0) continue;
-      mass[b] += p.mass[q];
-      first[b] += p.mass[q] * p.x[q];
-      momentum[b] += p.mass[q] * p.v[q];
+      const double m = p.mass[q];
+      mass[b] += m;
+      first[b] += m * p.x[q].template cast<double>();
+      momentum[b] += m * p.v[q].template cast<double>();
     }
     std::vector<Vec<dim>> origin(nb);
     for (size_t b = 0; b < nb; ++b) {
       bodies[b].mass = mass[b];
-      bodies[b].centre = first[b] / static_cast<Real>(mass[b]);
+      bodies[b].centre = (first[b] / mass[b]).template cast<Real>();
       origin[b] = bodies[b].hinged ? bodies[b].pivot : bodies[b].centre;
     }
     // Pass 2: angular momentum and inertia about the body's origin (centre of mass or pivot).
-    std::vector<typename A::Spin> L(nb, A::Spin::Zero());
-    std::vector<typename A::Inertia> I(nb, A::Inertia::Zero());
+    std::vector<DSpin> L(nb, DSpin::Zero());
+    std::vector<DInertia> I(nb, DInertia::Zero());
     for (size_t q = 0; q < n; ++q) {
       const int b = body_of[p.material[q]];
       if (b < 0) continue;
       const Vec<dim> r = p.x[q] - origin[b];
-      L[b] += p.mass[q] * (A::cross(r, p.v[q]) + D * A::axial2(p.C[q]));
-      I[b] += A::inertia(p.mass[q], r, D);
+      L[b] += (p.mass[q] * (A::cross(r, p.v[q]) + D * A::axial2(p.C[q]))).template cast<double>();
+      I[b] += A::inertia(p.mass[q], r, D).template cast<double>();
     }
     for (size_t b = 0; b < nb; ++b) {
       RigidBody<dim>& B = bodies[b];
-      B.inertia = I[b];
+      B.inertia = I[b].template cast<Real>();
       if (time < B.hold_until) {
         B.velocity.setZero();
         B.omega.setZero();
         continue;
       }
-      B.omega = I[b].ldlt().solve(L[b]);
-      B.velocity = B.hinged ? A::spin_cross(B.omega, B.centre - B.pivot) : Vec<dim>(momentum[b] / static_cast<Real>(mass[b]));
+      const DSpin omega = I[b].ldlt().solve(L[b]);
+      B.omega = omega.template cast<Real>();
+      if (B.hinged) {
+        B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
+      } else {
+        B.velocity = (momentum[b] / mass[b]).template cast<Real>();
+      }
     }
     // Pass 3: impose the rigid motion.
 #pragma omp parallel for schedule(static)
