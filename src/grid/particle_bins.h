@@ -10,7 +10,7 @@
 // occupied volume, not the lattice. The sort runs in parallel and stays stable: each thread counts its
 // contiguous chunk of particles per bin, a prefix over (bin, thread) gives every thread its write position
 // in every bin, and each thread fills its chunk in order, so a bin lists its particles in index order for
-// any thread count.
+// any thread count. The passes after the first work on runs of consecutive particles in the same block.
 #pragma once
 
 #include <algorithm>
@@ -37,30 +37,31 @@ struct ParticleBins {
   void build(const Particles<dim>& p, const Grid<dim>& g) {
     const size_t n = p.size();
     if (bin_id_.size() != g.block_count()) bin_id_.assign(g.block_count(), -1);
-    // The block of particle k, recomputed in each pass rather than stored (4 B per particle less at peak).
-    auto block_of = [&](size_t k) {
-      const BSplineStencil<dim> s(p.x[k] * g.inv_dx);
-      return static_cast<uint32_t>(g.block_index(g.block_of(s.base)));
-    };
     int threads = omp_get_max_threads();
-    std::vector<std::vector<uint32_t>> seen(threads);
-    // 1. Each thread lists the blocks where its run of particles changes block (particles are kept sorted by
-    //    block, so these lists are short).
+    if (runs_.size() < static_cast<size_t>(threads)) runs_.resize(threads);
+    // 1. Each thread splits its contiguous chunk of particles into runs of consecutive particles in the same
+    //    block. Particles are kept sorted by block (reordered every few steps), so the runs are few: about one
+    //    per block, plus one per particle that has crossed into another block since. The later passes work on
+    //    runs, so a particle's block is computed once per build, and no per-particle block is stored.
 #pragma omp parallel num_threads(threads)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       if (t == 0) threads = nt;  // the chunks below must be the same in every region
       const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
-      uint32_t last = UINT32_MAX;
+      auto& runs = runs_[t];
+      runs.clear();
       for (size_t k = lo; k < hi; ++k) {
-        const uint32_t b = block_of(k);
-        if (b != last) seen[t].push_back(last = b);
+        const BSplineStencil<dim> s(p.x[k] * g.inv_dx);
+        const auto b = static_cast<uint32_t>(g.block_index(g.block_of(s.base)));
+        if (runs.empty() || runs.back().block != b) runs.push_back({b, static_cast<uint32_t>(k), static_cast<uint32_t>(k)});
+        ++runs.back().end;
       }
     }
     // 2. The distinct blocks, ascending, and the map lattice block -> bin.
     blocks.clear();
-    for (const auto& s : seen) blocks.insert(blocks.end(), s.begin(), s.end());
-    seen.clear();
+    for (int t = 0; t < threads; ++t)
+      for (const Run& r : runs_[t])
+        if (blocks.empty() || blocks.back() != r.block) blocks.push_back(r.block);
     std::sort(blocks.begin(), blocks.end());
     blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
     const size_t nb = blocks.size();
@@ -69,10 +70,9 @@ struct ParticleBins {
     std::vector<std::vector<uint32_t>> count(threads, std::vector<uint32_t>(nb, 0));
 #pragma omp parallel num_threads(threads)
     {
-      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+      const int t = omp_get_thread_num();
       auto& c = count[t];
-      for (size_t k = lo; k < hi; ++k) ++c[bin_id_[block_of(k)]];
+      for (const Run& r : runs_[t]) c[bin_id_[r.block]] += r.end - r.begin;
     }
     start.assign(nb + 1, 0);
     uint32_t at = 0;
@@ -88,10 +88,12 @@ struct ParticleBins {
     order.resize(n);
 #pragma omp parallel num_threads(threads)
     {
-      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      const size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+      const int t = omp_get_thread_num();
       auto& c = count[t];
-      for (size_t k = lo; k < hi; ++k) order[c[bin_id_[block_of(k)]]++] = static_cast<uint32_t>(k);
+      for (const Run& r : runs_[t]) {
+        uint32_t& w = c[bin_id_[r.block]];
+        for (uint32_t k = r.begin; k < r.end; ++k) order[w++] = k;
+      }
     }
     for (const uint32_t b : blocks) bin_id_[b] = -1;
     colour_bins.assign(1u << dim, {});
@@ -99,7 +101,11 @@ struct ParticleBins {
   }
 
  private:
-  std::vector<int32_t> bin_id_;  // per lattice block: its bin during build, -1 otherwise
+  struct Run {
+    uint32_t block, begin, end;  // particles [begin, end) lie in lattice block `block`
+  };
+  std::vector<int32_t> bin_id_;          // per lattice block: its bin during build, -1 otherwise
+  std::vector<std::vector<Run>> runs_;   // per thread: the runs of its chunk (kept to reuse their storage)
 };
 
 }  // namespace cdmpm
