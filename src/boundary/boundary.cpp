@@ -17,11 +17,12 @@ Vec<dim> to_vec(const std::vector<double>& a) {
   return v;
 }
 
-// The grid-plane index nearest to coordinate/dx `cells`, and whether the coordinate lies on that plane (to a
-// relative 1e-6): the mirror treatment needs faces on grid planes.
+// The grid-plane index nearest to coordinate/dx `cells`, and whether the coordinate lies on that plane (within
+// node_tolerance_cells, the tolerance with which a face holds its nodes): the mirror treatment needs faces on
+// grid planes.
 inline bool on_grid_plane(Real cells, int& index) {
   index = static_cast<int>(std::lround(cells));
-  return std::abs(cells - Real(index)) <= Real(1e-6) * std::max(Real(1), std::abs(cells));
+  return std::abs(cells - Real(index)) <= node_tolerance_cells;
 }
 
 // Mirror symmetry across a plane normal to `axis` (boundary.h): fold adds ghost node src's mass and

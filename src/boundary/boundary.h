@@ -27,7 +27,8 @@
 // A node counts as inside a solid when it lies within node_tolerance(dx) = 1e-3 dx of it, so a face placed on
 // a grid plane holds the nodes on that plane whichever way the rounding of i dx and of the face coordinate goes
 // (a face at x = 9 H with dx = H / 12 lies at 900 m, node 108 at 900.0000000000001 m: without the tolerance the
-// node would be free, and water would flow into the face's cell).
+// node would be free, and water would flow into the face's cell). The same tolerance decides whether a face
+// lies on a grid plane for the mirror treatment, so a face that holds a plane's nodes is also mirrored there.
 // After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
 // there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
 // needs every particle on the material side of the wall. On the sparse grid (grid/grid.h) a pair is folded
@@ -44,6 +45,9 @@
 #include "scene/scene.h"
 
 namespace cdmpm {
+
+// Distance, in cells, within which a grid node counts as on a face (see above).
+inline constexpr Real node_tolerance_cells = Real(1e-3);
 
 // Applies a boundary condition with outward normal n to node velocity v.
 template <int dim>
@@ -79,7 +83,7 @@ class Boundary {
   virtual void keep_inside(Vec<dim>&) const {}
 
   // Distance within which a grid node counts as on a face (see above).
-  static Real node_tolerance(Real dx) { return Real(1e-3) * dx; }
+  static Real node_tolerance(Real dx) { return node_tolerance_cells * dx; }
 
  protected:
   BoundaryCondition condition_;
