@@ -10,6 +10,8 @@
 //   water3d/T    3D still block of water, 8 particles per cell             (2M)
 //   ice3d/T      3D Cam Clay ice block yielding in extension every step    (2M)
 //   calving2d/T  2D glacier front (elastic ice) next to a water basin      (1M; the issue names no size)
+//   machine_fma/T, machine_triad/T   the machine's own two-thread ceilings: core throughput and memory
+//                bandwidth (bench_machine.h), to read the cases' two-thread speed-ups against
 // T is the number of OpenMP threads (1 and 2). The scenes are described in bench_scenes.h.
 //
 // Counters:
@@ -37,6 +39,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_machine.h"
 #include "bench_scenes.h"
 #include "io/process_memory.h"
 #include "sim/simulation.h"
@@ -115,6 +118,7 @@ int main(int argc, char** argv) {
   register_case<3>("water3d", water3d, 2000000);
   register_case<3>("ice3d", ice3d, 2000000);
   register_case<2>("calving2d", cdmpm::bench::calving_2d, 1000000);
+  cdmpm::bench::register_machine_cases();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -13,7 +13,12 @@
 //
 // Return mapping (non-associative, CD-MPM), from the trial elastic F = U diag(s) V^T (math/svd.h: U, V
 // rotations, an inverted F has a negative last s):
-//   * y <= 0: elastic, F untouched (bitwise).
+//   * y <= 0: elastic, F untouched (bitwise). Most particles of a glacier are elastic in most steps, so this
+//             case is decided BEFORE the SVD, from invariants of F alone (trial_is_elastic): J = det F and
+//             b = F F^T, whose eigenvalues are s_i^2, give p = p(J) and |dev(bhat)| = J^(-2/d) |dev b|
+//             (Frobenius norms), and a lower bound on the smallest singular value, s_min^2 >=
+//             J^2 / (tr(b) / (d - 1))^(d - 1) (the other d - 1 eigenvalues of b have a product at most their
+//             mean to the power d - 1), rules out the clamp below. States it cannot clear take the SVD path.
 //   * p > p0: project to the compressive tip (p0, 0): s_i = J^(1/d), kappa/2 (J^2 - 1) = -p0
 //             => J = sqrt(1 - 2 p0 / kappa) (closed form; tau = J sigma is the Kirchhoff stress).
 //   * p < -beta p0: project to the tensile tip (-beta p0, 0): J = sqrt(1 + 2 beta p0 / kappa).
@@ -122,8 +127,35 @@ struct CohesiveCamClay {
   // Plastic projection of the elastic deformation gradient F (in place). p0 is the current compressive
   // strength (normally p0_of_alpha(alpha, e.kappa)); alpha is updated if `hardening`.
   // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
+  // True if F is certainly an elastic trial state that the return mapping leaves untouched (see the header):
+  // not inverted, smallest singular value certainly above the clamp, and y(p, q) <= 0. Without a root:
+  // with q^2 = 3/2 mu^2 J^(-4/d) |dev b|^2, y <= 0 reads X J^(-4/d) <= R for X = (1 + 2 beta) 3/2 mu^2 |dev b|^2
+  // and R = M^2 (p + beta p0)(p0 - p) >= 0, i.e. X <= R J^2 (2D) or X^3 <= R^3 J^4 (3D); X and R are scaled
+  // by 1/kappa^2 so that their cubes stay within single precision's range (an underflow only sends the state
+  // to the full return mapping).
+  template <int dim>
+  bool trial_is_elastic(const Mat<dim>& F, Real p0, const NeoHookeanSplit& e) const {
+    const Real J = F.determinant();
+    if (!(J > 0)) return false;
+    const Real p = e.pressure_of_J(J);
+    if (p > p0 || p < -beta * p0) return false;  // beyond a tip: plastic
+    const Mat<dim> b = F * F.transpose();
+    const Real trb = b.trace();
+    const Real others = trb / Real(dim - 1);  // bound on the mean of the other eigenvalues
+    const Real s_min2_bound = J * J / (dim == 2 ? others : others * others);
+    constexpr Real clamp2 = Real(4) * min_singular_value * min_singular_value;  // factor 4: rounding margin
+    if (!(s_min2_bound >= clamp2)) return false;
+    const Real mu_k = e.mu / e.kappa, p_k = p / e.kappa, p0_k = p0 / e.kappa;
+    const Real X = (Real(1) + Real(2) * beta) * Real(1.5) * mu_k * mu_k *
+                   (b - (trb / Real(dim)) * Mat<dim>::Identity()).squaredNorm();
+    const Real R = M * M * (p_k + beta * p0_k) * (p0_k - p_k);
+    if constexpr (dim == 2) return X <= R * J * J;
+    else return X * X * X <= R * R * R * (J * J) * (J * J);
+  }
+
   template <int dim>
   bool return_mapping(Mat<dim>& F, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
+    if (trial_is_elastic<dim>(F, p0, e)) return false;
     Mat<dim> U, V;
     Vec<dim> s;
     svd<dim>(F, U, s, V);  // U, V rotations; an inverted F has s(dim - 1) < 0
@@ -135,7 +167,8 @@ struct CohesiveCamClay {
       }
 
     const Real J = s.prod();
-    const Real Jm2d = pow_minus_two_over_dim<dim>(J);
+    const Real Jd = root_dim<dim>(J);  // J^(1/d), and J^(-2/d) from it: one root per call
+    const Real Jm2d = Real(1) / (Jd * Jd);
     Vec<dim> bhat = (Jm2d * s.array().square()).matrix();  // unimodular stretch, prod = 1
     const Real bmean = bhat.sum() / Real(dim);
     const Vec<dim> bdev = (bhat.array() - bmean).matrix();
@@ -179,7 +212,6 @@ struct CohesiveCamClay {
       if (!(m_new < m)) break;  // converged to machine precision
       m = m_new;
     }
-    const Real Jd = root_dim<dim>(J);
     Vec<dim> s_new;
     for (int i = 0; i < dim; ++i) s_new(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
     if (hardening) {

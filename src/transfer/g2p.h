@@ -30,9 +30,9 @@ void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, After&
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t j = 0; j < nb; ++j) {
     const BlockPatch<dim> patch(g, bins.blocks[j]);
-    std::array<Vec<dim>, BlockPatch<dim>::size> pv;
-    for (auto& v : pv) v.setZero();
-    patch.for_each_node([&](int n, size_t k) { pv[n] = g.momentum[k]; });
+    PatchRecords<dim> pv;
+    for (auto& r : pv) r.setZero();
+    patch.for_each_node([&](int n, size_t k) { pv[n].template head<dim>() = g.momentum[k]; });
     for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
       const uint32_t q = bins.order[k];
       const BSplineStencil<dim> s(p.x[q] * g.inv_dx);

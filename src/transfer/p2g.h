@@ -50,8 +50,8 @@ void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const 
         scatter_to_patch<dim>(acc, s, patch.base_index(s), m, m * p.v[q] - affine * s.fx, affine);
       }
       patch.for_each_node([&](int n, size_t k) {
-        g.mass[k] += acc.mass[n];
-        g.momentum[k] += acc.momentum[n];
+        g.mass[k] += acc.mass(n);
+        g.momentum[k] += acc.momentum(n);
       });
     }
   }

@@ -298,6 +298,57 @@ void check_uniaxial() {
 
 }  // namespace
 
+// The return mapping decides most elastic states before the SVD (CohesiveCamClay::trial_is_elastic, from J and
+// b = F F^T without a root). It must agree with the yield function evaluated on the stress: a clearly elastic
+// state is cleared, a clearly plastic one is not (a false "elastic" would skip a projection). "Clearly": |y|
+// beyond the round-off of y computed two ways, O(u kappa^2 / (M p0)^2 * |strain|) relative to (M p0)^2: 1e-8
+// in double; in single precision 5 %, the relative round-off of dev(b) at the smallest strains here
+// (b - tr(b)/d I loses the digits of strains of 1e-5 against 1).
+template <int dim>
+void check_elastic_precheck() {
+  std::mt19937 rng(77 + dim);
+  const Real margin = kDouble ? Real(1e-8) : Real(5e-2);
+  for (const Scale& sc : kScales) {
+    const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(sc.E, sc.nu, dim);
+    CohesiveCamClay cc;
+    // p0 = 0.3 kappa: strong enough for elastic states with J down to 0.63, where q's factor J^(-4/d) counts.
+    for (Real ratio : {Real(0.3), Real(1e-2), Real(1e-3)}) {
+      const Real p0 = ratio * e.kappa, scale_y = cc.M * cc.M * p0 * p0;
+      int cleared = 0, plastic = 0;
+      for (Real ss : {Real(0.1), Real(0.5), Real(1), Real(2), Real(10)}) {
+        for (int trial = 0; trial < 400; ++trial) {
+          Mat<dim> F = random_F<dim>(rng, ss * p0 / e.mu);
+          F *= std::exp(ss * p0 / e.kappa * Real(std::uniform_real_distribution<double>(-1, 1)(rng)) / dim);
+          const auto [p, q] = invariants<dim>(e, F);
+          const Real y = cc.yield(p, q, p0);
+          const bool fast = cc.trial_is_elastic<dim>(F, p0, e);
+          if (y < -margin * scale_y) {
+            EXPECT_TRUE(fast) << sc.name << " y/scale " << y / scale_y;
+            cleared += fast;
+          } else if (y > margin * scale_y) {
+            EXPECT_FALSE(fast) << sc.name << " y/scale " << y / scale_y;
+            ++plastic;
+          }
+        }
+      }
+      EXPECT_GT(cleared, 100);  // both outcomes were exercised
+      EXPECT_GT(plastic, 100);
+    }
+  }
+  // Inverted and nearly degenerate F are never cleared: they need the SVD's clamp.
+  const NeoHookeanSplit e = NeoHookeanSplit::from_young_poisson(Real(9e9), Real(0.3), dim);
+  CohesiveCamClay cc;
+  Mat<dim> inverted = Mat<dim>::Identity();
+  inverted(0, 0) = -1;
+  EXPECT_FALSE(cc.trial_is_elastic<dim>(inverted, e.kappa, e));
+  Mat<dim> thin = Mat<dim>::Identity();
+  thin(0, 0) = Real(1e-7);
+  EXPECT_FALSE(cc.trial_is_elastic<dim>(thin, Real(1e3) * e.kappa, e));
+}
+
+TEST(IceConstitutive, ElasticPrecheckAgreesWithYieldFunction2D) { check_elastic_precheck<2>(); }
+TEST(IceConstitutive, ElasticPrecheckAgreesWithYieldFunction3D) { check_elastic_precheck<3>(); }
+
 TEST(IceConstitutive, KirchhoffIsEnergyDerivative2D) { SKIP_IF_FLOAT(); check_energy_derivative<2>(); }
 TEST(IceConstitutive, KirchhoffIsEnergyDerivative3D) { SKIP_IF_FLOAT(); check_energy_derivative<3>(); }
 TEST(IceConstitutive, ZeroStressAndObjectivity2D) { SKIP_IF_FLOAT(); check_zero_stress_and_objectivity<2>(); }
