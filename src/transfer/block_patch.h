@@ -66,8 +66,8 @@ struct BlockPatch {
   }
 };
 
-// One patch node as four reals, so that a node's update is one 4-wide vector operation (one AVX register
-// in double, half of one in float; two SSE2 registers on the x86-64 baseline): in p2g
+// One patch node as four reals, so that a node's update is one 4-wide vector operation (in double one AVX
+// register, or two SSE2 registers on the x86-64 baseline; in float one SSE register): in p2g
 // [mass, momentum (dim components), 0...], in g2p [velocity (dim components), 0...].
 using NodeRecord = Eigen::Matrix<Real, 4, 1>;
 template <int dim>
