@@ -125,15 +125,12 @@ struct CohesiveCamClay {
     return B > 0 ? (Real(-2) * C) / (B + disc) : (-B + disc) / (Real(2) * A);
   }
 
-  // Plastic projection of the elastic deformation gradient F (in place). p0 is the current compressive
-  // strength (normally p0_of_alpha(alpha, e.kappa)); alpha is updated if `hardening`.
-  // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
   // True if F is certainly an elastic trial state that the return mapping leaves untouched (see the header):
   // not inverted, smallest singular value certainly above the clamp, and y(p, q) <= 0. Without a root:
   // with q^2 = 3/2 mu^2 J^(-4/d) |dev b|^2, y <= 0 reads X J^(-4/d) <= R for X = (1 + 2 beta) 3/2 mu^2 |dev b|^2
-  // and R = M^2 (p + beta p0)(p0 - p) >= 0, i.e. X <= R J^2 (2D) or X^3 <= R^3 J^4 (3D); in 3D X and R are
-  // scaled by 1/kappa^2 so that their cubes stay within single precision's range (an underflow only sends the
-  // state to the full return mapping). No division but that one: this check is paid by every yielding particle.
+  // and R = M^2 (p + beta p0)(p0 - p) >= 0, i.e. X <= R J^2 (2D) or X^3 <= R^3 J^4 (3D). X and R are scaled
+  // by 1/kappa^2 so that the cubes stay within single precision's range (an underflow only sends the state to
+  // the full return mapping). One division: every yielding particle pays for this check.
   template <int dim>
   bool trial_is_elastic(const Mat<dim>& F, Real p0, const NeoHookeanSplit& e) const {
     const Real J = F.determinant();
@@ -145,19 +142,18 @@ struct CohesiveCamClay {
     const Real others = trb / Real(dim - 1);  // bound on the mean of the other eigenvalues
     constexpr Real clamp2 = Real(4) * min_singular_value * min_singular_value;  // factor 4: rounding margin
     if (!(J * J >= clamp2 * (dim == 2 ? others : others * others))) return false;
-    const Real dev2 = (b - (trb / Real(dim)) * Mat<dim>::Identity()).squaredNorm();
-    if constexpr (dim == 2) {  // no cubes: mu^2 and (M p0)^2 stay far inside float's range
-      const Real X = (Real(1) + Real(2) * beta) * Real(1.5) * e.mu * e.mu * dev2;
-      return X <= M * M * (p + beta * p0) * (p0 - p) * J * J;
-    } else {
-      const Real inv_kappa = Real(1) / e.kappa;
-      const Real mu_k = e.mu * inv_kappa, p_k = p * inv_kappa, p0_k = p0 * inv_kappa;
-      const Real X = (Real(1) + Real(2) * beta) * Real(1.5) * mu_k * mu_k * dev2;
-      const Real R = M * M * (p_k + beta * p0_k) * (p0_k - p_k);
-      return X * X * X <= R * R * R * (J * J) * (J * J);
-    }
+    const Real inv_kappa = Real(1) / e.kappa;
+    const Real mu_k = e.mu * inv_kappa, p_k = p * inv_kappa, p0_k = p0 * inv_kappa;
+    const Real X = (Real(1) + Real(2) * beta) * Real(1.5) * mu_k * mu_k *
+                   (b - (trb / Real(dim)) * Mat<dim>::Identity()).squaredNorm();
+    const Real R = M * M * (p_k + beta * p0_k) * (p0_k - p_k);
+    if constexpr (dim == 2) return X <= R * J * J;
+    else return X * X * X <= R * R * R * (J * J) * (J * J);
   }
 
+  // Plastic projection of the elastic deformation gradient F (in place). p0 is the current compressive
+  // strength (normally p0_of_alpha(alpha, e.kappa)); alpha is updated if `hardening`.
+  // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
   template <int dim>
   bool return_mapping(Mat<dim>& F, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
     // In 3D the check saves the iterative SVD of an elastic particle. The 2D SVD is closed-form and costs

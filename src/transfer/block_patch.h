@@ -73,13 +73,12 @@ using NodeRecord = Eigen::Matrix<Real, 4, 1>;
 template <int dim>
 using PatchRecords = std::array<NodeRecord, BlockPatch<dim>::size>;
 
-// Extends a dim-vector to a record: `first` in slot 0 and v in the next dim slots (slot offset 1), or v in
-// the first dim slots (offset 0); zeros elsewhere.
+// The p2g record [first, v, 0...]: `first` in slot 0, the dim-vector v in the next dim slots.
 template <int dim>
-inline NodeRecord to_record(const Vec<dim>& v, int offset, Real first = 0) {
+inline NodeRecord to_record(Real first, const Vec<dim>& v) {
   NodeRecord r = NodeRecord::Zero();
   r[0] = first;
-  r.template segment<dim>(offset) = v;
+  r.template segment<dim>(1) = v;
   return r;
 }
 
@@ -105,8 +104,8 @@ inline void scatter_to_patch(PatchAccumulator<dim>& acc, const BSplineStencil<di
                              const Vec<dim>& a, const Mat<dim>& A) {
   constexpr int W = BlockPatch<dim>::width;
   NodeRecord col[dim];
-  for (int c = 0; c < dim; ++c) col[c] = to_record<dim>(A.col(c), 1);
-  NodeRecord u0 = to_record<dim>(a, 1, m);
+  for (int c = 0; c < dim; ++c) col[c] = to_record<dim>(0, A.col(c));
+  NodeRecord u0 = to_record<dim>(m, a);
   for (int i = 0; i < 3; ++i, u0 += col[0]) {
     if constexpr (dim == 2) {
       NodeRecord u = u0;
