@@ -8,7 +8,12 @@ sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) 
 ice reaches it in uniaxial tension (peak within 5 %).
 
     /usr/bin/python3 tools/sweep_sliding_block.py [--cells-per-H 16] [--ratios 0 0.2 ...] [--out DIR] [--jobs 2]
+                                                  [--crack-frames DT]
 Writes DIR/sliding_block_sweep.csv and DIR/sliding_block_sweep.png; each run's outputs are in DIR/D_<ratio>/.
+With --crack-frames DT the runs write frames every DT seconds and the CSV gets crack_overhang_over_H: the
+overhang (ice front beyond the bed edge) in the first frame with a broken ice particle (damage > 0.5) in the
+upper half of the slab within H of the edge, i.e. where the bending crack starts; L/H is the detached
+iceberg's length, which also holds any ice behind the edge that the crack cuts off.
 A run with no iceberg before the scene's end time reports the overhang it reached (L/H larger than that).
 The default ratios include neutral buoyancy, D/H = rho_i/rho_w, where the overhang carries no net load.
 """
@@ -19,6 +24,7 @@ import json
 import math
 import os
 import subprocess
+import re
 import sys
 
 import matplotlib
@@ -28,6 +34,41 @@ import matplotlib.pyplot as plt
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(ROOT, "scenes", "sliding_block_2d.json")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+
+def agreement_window(scene, d_max=0.6, band=0.3):
+    """Range of s = sigma_t / (rho_i g H) for which the cantilever stays within +-band of the linear model on
+    0 <= D/H <= d_max. Their ratio is 1.5 f(d) / sqrt(3 s), f(d) = (1 - d) / sqrt(1 - r d), r = rho_w / rho_i;
+    the extremes of f over [0, d_max] (taken on a fine grid) bound s from both sides."""
+    r = scene["materials"]["water"]["density"] / scene["materials"]["ice"]["density"]
+    shape = [(1 - d) / math.sqrt(1 - r * d) for d in [i * d_max / 100 for i in range(101)]]
+    hi, lo = max(shape), min(shape)  # ratio = 1.5 * shape / sqrt(3 s)
+    return (1.5 * hi / (1 + band)) ** 2 / 3, (1.5 * lo / (1 - band)) ** 2 / 3
+
+
+def parameters(scene, overrides):
+    """The scene's parameters block evaluated in order ("= expr" strings refer to earlier parameters)."""
+    values = {}
+    for key, v in scene["parameters"].items():
+        v = overrides.get(key, v)
+        values[key] = eval(v[1:], {"__builtins__": {}}, dict(values)) if isinstance(v, str) else v
+    return values
+
+
+def crack_overhang(run_dir, scene, par):
+    """Overhang / H in the first frame with broken ice (damage > 0.5) in the slab's upper half near the edge."""
+    from vtu import read_vtu
+    H, x_edge, z_bed = par["H"], par["x_edge"], par["z_bed"]
+    ice = list(scene["materials"]).index("ice")
+    pvd = open(os.path.join(run_dir, "particles.pvd")).read()
+    for _, f in sorted((float(t), f) for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd)):
+        pts, fields = read_vtu(os.path.join(run_dir, f))
+        m = fields["material"] == ice
+        x, y, d = pts[m, 0], pts[m, 1], fields["damage"][m]
+        if ((d > 0.5) & (y > z_bed + 0.5 * H) & (abs(x - x_edge) < H)).any():
+            return (x.max() - x_edge) / H
+    return math.nan
 
 
 def models(scene, ratio):
@@ -52,6 +93,8 @@ def main():
     ap.add_argument("--cdmpm", default=os.path.join(ROOT, "build", "cdmpm"))
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--jobs", type=int, default=1, help="cases run at once (e.g. 2 on 2 cores)")
+    ap.add_argument("--crack-frames", type=float, metavar="DT",
+                    help="write frames every DT s and report the overhang at which the crack starts")
     args = ap.parse_args()
     scene = json.load(open(SCENE))
     H = scene["parameters"]["H"]
@@ -59,10 +102,18 @@ def main():
         neutral = scene["materials"]["ice"]["density"] / scene["materials"]["water"]["density"]
         args.ratios = [0, 0.2, 0.4, 0.6, 0.8, 0.9, round(neutral, 4), 0.95, 1.0]
     os.makedirs(args.out, exist_ok=True)
+    par = parameters(scene, {"cells_per_H": args.cells_per_H})
+    ice = scene["materials"]["ice"]
+    s_scene = ice["tensile_strength"] / (ice["density"] * -scene.get("gravity", [0, -9.81])[1] * par["H"])
+    s_lo, s_hi = agreement_window(scene)
+    print(f"sigma_t / (rho_i g H) = {s_scene:.3f}; the cantilever is within 30 % of the linear model for every"
+          f" D/H <= 0.6 only if it lies in [{s_lo:.3f}, {s_hi:.3f}]", flush=True)
     def run(r):
         run_dir = os.path.join(args.out, f"D_{r:g}")
         cmd = [args.cdmpm, "run", SCENE, "--out", run_dir, "--quiet", "--set", f"parameters.D_over_H={r}",
-               "--set", f"parameters.cells_per_H={args.cells_per_H}", "--set", "output.frames=false"]
+               "--set", f"parameters.cells_per_H={args.cells_per_H}"]
+        cmd += (["--set", f"time.frame_interval={args.crack_frames}"] if args.crack_frames
+                else ["--set", "output.frames=false"])
         if args.threads:
             cmd += ["--threads", str(args.threads)]
         print(" ".join(cmd), flush=True)
@@ -81,8 +132,13 @@ def main():
             L_H, t = overhang / H, summary["sim_time"]
         print(f"D/H = {r:g}: {status}, L/H = {L_H:.3f} (linear model {linear:.3f}, cantilever {cantilever:.3f}),"
               f" t = {t:.1f} s, wall {summary['wall_time']:.0f} s", flush=True)
-        return {"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
-                "model_cantilever": cantilever, "wall_time": summary["wall_time"]}
+        row = {"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
+               "model_cantilever": cantilever, "wall_time": summary["wall_time"]}
+        if args.crack_frames:
+            par = parameters(scene, {"D_over_H": r, "cells_per_H": args.cells_per_H})
+            row["crack_overhang_over_H"] = crack_overhang(run_dir, scene, par)
+            print(f"D/H = {r:g}: crack starts at an overhang of {row['crack_overhang_over_H']:.3f} H", flush=True)
+        return row
 
     # --jobs runs that many cases at once (each with --threads 1 unless --threads is given): on 2 cores,
     # two single-threaded runs use the machine better than one two-threaded run at a time.
@@ -108,6 +164,10 @@ def main():
         pts = [(row["D_over_H"], row["L_over_H"]) for row in rows if row["status"] == status]
         if pts:
             ax.plot(*zip(*pts), marker, label="cdmpm" + (" (no failure: overhang reached)" if status != "iceberg" else ""))
+    if args.crack_frames:
+        pts = [(row["D_over_H"], row["crack_overhang_over_H"]) for row in rows if row["status"] == "iceberg"]
+        if pts:
+            ax.plot(*zip(*pts), "s", mfc="none", label="cdmpm, overhang where the crack starts")
     ax.set_xlabel("D/H")
     ax.set_ylabel("L/H")
     ax.set_ylim(0, 8)

@@ -40,6 +40,8 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
   VtuField mat{"material", 1, {}, {}, std::vector<int32_t>(P.material.begin(), P.material.end())};
   VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
   VtuField J{"J", 1, std::vector<float>(n), {}, {}};
+  // Cauchy stress sigma = tau / J [Pa], a full 3x3 tensor (row-major, zero-padded in 2D) as ParaView expects.
+  VtuField stress{"stress", 9, std::vector<float>(9 * n, 0.f), {}, {}};
   // Ice state: damage in [0, 1], the hardening variable alpha and the current strength p0(alpha).
   const bool ice = std::any_of(sim.materials.begin(), sim.materials.end(),
                                [](const Material& m) { return m.kind == MaterialKind::Ice; });
@@ -56,16 +58,43 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     }
     pres.f32[q] = static_cast<float>(particle_pressure(m, P, q));
     J.f32[q] = static_cast<float>(P.J[q]);
+    const Real Jq = m.kind == MaterialKind::Ice ? P.F[q].determinant() : P.J[q];
+    const Mat<dim> sigma = kirchhoff_stress(m, P, q) / Jq;
+    for (int a = 0; a < dim; ++a)
+      for (int b = 0; b < dim; ++b) stress.f32[9 * q + 3 * a + b] = static_cast<float>(sigma(a, b));
     if (ice && m.kind == MaterialKind::Ice) {
       damage.f32[q] = static_cast<float>(m.ice.damage(P.alpha[q]));
       alpha.f32[q] = static_cast<float>(P.alpha[q]);
       p0.f32[q] = static_cast<float>(m.ice.plasticity ? m.ice.p0(P.alpha[q]) : Real(0));
     }
   }
-  std::vector<VtuField> fields = {vel, mat, pres, J};
+  std::vector<VtuField> fields = {vel, mat, pres, J, stress};
   if (ice) fields.insert(fields.end(), {damage, alpha, p0});
   write_vtu(path, pts, fields);
 }
+
+// Output times on a regular grid: the event after the one with index k is at origin + (k + 1 - origin_index) dt
+// (origin 0, origin_index 0 for a fresh run, so the times are exactly (k + 1) dt). A resumed run keeps that
+// grid when its interval is the one the checkpoint was written with; with another interval (a --set of
+// time.frame_interval or probes.interval on --resume) the grid starts again at the resume time t, as the
+// old grid would put the next event in the past (a negative step) or more than two intervals ahead.
+struct OutputGrid {
+  double dt, origin = 0;
+  long long origin_index = 0;
+  // The time of the event after k, no later than `end` (a grid time within 1e-9 dt of end is end itself, so
+  // rounding of the grid cannot put a separate event a hair before the last one).
+  double next(long long k, double end) const {
+    const double t = origin + double(k + 1 - origin_index) * dt;
+    return t > end - 1e-9 * dt ? end : t;
+  }
+  void resume_at(double t, long long k) {
+    const double n = origin + double(k + 1 - origin_index) * dt;
+    if (!(n > t && n <= t + 2 * dt)) {
+      origin = t;
+      origin_index = k;
+    }
+  }
+};
 
 std::string format_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--:--";
@@ -82,7 +111,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   Probes<dim> probes(scene, sim);
   const fs::path out(opt.out_dir);
   const std::string ckpt = (out / "checkpoint.bin").string();
-  const double frame_dt = scene.time.frame_interval, probe_dt = scene.output.probe_interval, end = scene.time.end;
+  const double end = scene.time.end;
+  OutputGrid frame_grid{scene.time.frame_interval}, probe_grid{scene.output.probe_interval};
   const EnergyTotals e0 = energy_totals(sim.particles, sim.materials, sim.gravity);
 
   IcebergTracker<dim> icebergs(sim);
@@ -102,6 +132,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
                                std::to_string(seeded_solids) + " ice): resume with the scene and --set values of the run that wrote it");
     sim.time = meta.time;
     sim.steps = meta.steps;
+    frame_grid.resume_at(sim.time, meta.frame_index);
+    probe_grid.resume_at(sim.time, meta.probe_index);
     sim.wave_dt_at_start = static_cast<Real>(meta.wave_dt_at_start);
     sim.refresh();
     probes.still_levels = meta.still_levels;
@@ -186,8 +218,8 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
       result = {"unstable", os.str(), 3};
       break;
     }
-    const double next_frame = std::min(end, (meta.frame_index + 1) * frame_dt);
-    const double next_probe = std::min(end, (meta.probe_index + 1) * probe_dt);
+    const double next_frame = frame_grid.next(meta.frame_index, end);
+    const double next_probe = probe_grid.next(meta.probe_index, end);
     const double target = std::min(next_frame, next_probe);
     const bool hit = sim.time + dt >= target;
     if (hit) dt = static_cast<Real>(target - sim.time);

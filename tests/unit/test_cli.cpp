@@ -103,6 +103,35 @@ TEST(Cli, ResumeGivesBitwiseIdenticalState) {
   EXPECT_NE(r.output.find("checkpoint"), std::string::npos) << r.output;
 }
 
+// Resuming with another frame or probe interval (--set time.frame_interval / probes.interval) continues on a
+// grid of the new interval from the resume time. The first version kept the index grid, (k + 1) dt: with a
+// shorter interval it put the next output in the past, the run stepped with a negative dt and blew up.
+TEST(Cli, ResumeWithAnotherOutputIntervalContinuesFromTheResumeTime) {
+  TempDir dir;
+  const std::string scene = source_path("scenes/dam_break_2d.json");
+  auto r = run_cdmpm({"run", scene, "--out", dir / "run", "--quiet", "--set", "domain.dx=0.003571875", "--set",
+                      "time.end=0.04", "--set", "time.frame_interval=0.01"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* interval : {"0.0025", "0.02"}) {  // shorter, then longer than the checkpoint's 0.01 s
+    const double dt = std::stod(interval), t0 = read_json(dir / "run/summary.json")["sim_time"];
+    r = run_cdmpm({"run", scene, "--resume", dir / "run", "--quiet", "--set", "domain.dx=0.003571875", "--set",
+                   "time.end=" + std::to_string(t0 + 2 * dt), "--set", std::string("time.frame_interval=") + interval,
+                   "--set", std::string("probes.interval=") + interval});
+    ASSERT_EQ(r.exit_code, 0) << interval << ": " << r.output;
+    const auto s = read_json(dir / "run/summary.json");
+    EXPECT_EQ(s["status"], "completed") << interval;
+    EXPECT_NEAR(s["sim_time"].get<double>(), t0 + 2 * dt, 1e-12) << interval;
+    // The last two frames in particles.pvd are at t0 + dt and t0 + 2 dt.
+    const std::string pvd = read_bytes(dir / "run/particles.pvd");
+    std::vector<double> times;
+    for (size_t p = pvd.find("timestep=\""); p != std::string::npos; p = pvd.find("timestep=\"", p + 1))
+      times.push_back(std::stod(pvd.substr(p + 10)));
+    ASSERT_GE(times.size(), 2u);
+    EXPECT_NEAR(times[times.size() - 2], t0 + dt, 1e-9) << interval;
+    EXPECT_NEAR(times.back(), t0 + 2 * dt, 1e-9) << interval;
+  }
+}
+
 // The same for ice (elastic F, hardening alpha, icebergs.csv, the first-iceberg record in the checkpoint):
 // the coarse sliding block pushed hard enough to break before half time (a block breaks off near the pusher
 // at about 6 s), resumed at half time, and on 1 thread. (At a push of 10 m/s the first break was a fragment

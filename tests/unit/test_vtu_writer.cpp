@@ -2,6 +2,8 @@
 // offsets + appended raw blocks) and every byte count and value is checked exactly.
 #include "io/vtu_writer.h"
 
+#include "vtu_reader.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -16,55 +18,10 @@
 namespace fs = std::filesystem;
 using namespace cdmpm;
 
+using cdmpm::testing::ParsedVtu;
+using cdmpm::testing::read_file;
+
 namespace {
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-// Minimal reader for the files write_vtu produces.
-struct ParsedVtu {
-  std::string text;
-  size_t data_start = 0;  // first byte after the '_' marker
-
-  explicit ParsedVtu(const fs::path& p) : text(read_file(p)) {
-    const std::string tag = "<AppendedData encoding=\"raw\">";
-    const size_t a = text.find(tag);
-    if (a == std::string::npos) throw std::runtime_error("no AppendedData");
-    const size_t u = text.find('_', a + tag.size());
-    if (u == std::string::npos) throw std::runtime_error("no _ marker");
-    data_start = u + 1;
-  }
-  std::string header() const { return text.substr(0, data_start); }
-
-  // Value of attribute `attr` in the DataArray element named `name`.
-  std::string attr(const std::string& name, const std::string& attr) const {
-    const size_t n = text.find("Name=\"" + name + "\"");
-    if (n == std::string::npos || n > data_start) throw std::runtime_error("no array " + name);
-    const size_t start = text.rfind("<DataArray", n), end = text.find("/>", n);
-    const std::string elem = text.substr(start, end - start);
-    const size_t a = elem.find(" " + attr + "=\"");
-    if (a == std::string::npos) throw std::runtime_error("no attribute " + attr + " on " + name);
-    const size_t v = a + attr.size() + 3;
-    return elem.substr(v, elem.find('"', v) - v);
-  }
-
-  // Reads the appended block of array `name`, checking its byte count against the element count.
-  template <class T>
-  std::vector<T> array(const std::string& name, size_t expected_count) const {
-    EXPECT_EQ(attr(name, "format"), "appended");
-    const size_t pos = data_start + std::stoull(attr(name, "offset"));
-    uint64_t bytes = 0;
-    if (pos + sizeof bytes > text.size()) throw std::runtime_error("offset past end for " + name);
-    std::memcpy(&bytes, text.data() + pos, sizeof bytes);
-    EXPECT_EQ(bytes, expected_count * sizeof(T)) << name;
-    if (pos + sizeof bytes + bytes > text.size()) throw std::runtime_error("block past end for " + name);
-    std::vector<T> out(bytes / sizeof(T));
-    if (bytes) std::memcpy(out.data(), text.data() + pos + sizeof bytes, bytes);
-    return out;
-  }
-};
 
 class VtuWriterTest : public ::testing::Test {
  protected:

@@ -1,0 +1,70 @@
+// test_frames.cpp - the particle frames' stress tensor (field "stress", Cauchy sigma = tau / J, 3x3 row-major,
+// zero-padded in 2D). Frame 0 of scenes/calving_front_2d.json holds the initial equilibrium state that the
+// seeding prescribes (src/sim/simulation.cpp, seed_body), which the stress must reproduce:
+//   ice   (lithostatic, laterally free): sigma_yy = -rho_i g (H - y), sigma_xx = sigma_xy = 0;
+//   water (hydrostatic):                 sigma = -p I with p = rho_w g (h - y);
+// and for every particle the frame's "pressure" is -tr(sigma)/2.
+// Tolerance: the seeding's Newton solve stops at a residual of 64 eps kappa (ice), the equation of state is
+// inverted to the same relative precision (water), and the frame stores float32 (relative 2^-24).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cli_helpers.h"
+#include "core/types.h"
+#include "vtu_reader.h"
+
+namespace cdmpm::testing {
+namespace {
+
+TEST(Frames, StressTensorIsTheSeededEquilibriumState) {
+  TempDir dir;
+  const auto scene = read_json(source_path("scenes/calving_front_2d.json"));
+  const auto r = run_cdmpm({"run", source_path("scenes/calving_front_2d.json"), "--out", dir / "out", "--quiet",
+                            "--set", "parameters.dx=10", "--set", "time.end=0.01", "--set", "time.frame_interval=0.01"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const ParsedVtu vtu(dir / "out/particles_0000.vtu");
+  const size_t n = vtu.points();
+  ASSERT_GT(n, 0u);
+  const auto pts = vtu.array<double>("Points", 3 * n);
+  const auto mat = vtu.array<int32_t>("material", n);
+  const auto pres = vtu.array<float>("pressure", n);
+  const auto S = vtu.array<float>("stress", 9 * n);
+
+  const double g = 9.81, H = scene["parameters"]["H"], h = scene["parameters"]["water_depth"];
+  const auto& ice = scene["materials"]["ice"];
+  const double rho_i = ice["density"], rho_w = scene["materials"]["water"]["density"];
+  const double E = ice["youngs_modulus"], nu = ice["poissons_ratio"];
+  const double K_w = scene["materials"]["water"]["bulk_modulus"];
+  // Largest modulus in play (2D plane-strain bulk modulus of the ice is below E / (1 - 2 nu)).
+  const double modulus = std::max(E / (1 - 2 * nu), K_w);
+  const double eps = std::numeric_limits<Real>::epsilon();
+  const double tol = 64 * eps * modulus + std::ldexp(rho_i * g * H, -20);
+
+  size_t n_ice = 0, n_water = 0;
+  for (size_t q = 0; q < n; ++q) {
+    const double y = pts[3 * q + 1];
+    const float* s = &S[9 * q];
+    // 2D: the z row and column are zero.
+    for (int k : {2, 5, 6, 7, 8}) ASSERT_EQ(s[k], 0.f) << "particle " << q;
+    ASSERT_EQ(s[1], s[3]) << "particle " << q << ": sigma not symmetric";
+    EXPECT_NEAR(pres[q], -(double(s[0]) + s[4]) / 2, tol) << "particle " << q;
+    if (mat[q] == 0) {  // ice
+      ++n_ice;
+      EXPECT_NEAR(s[4], -rho_i * g * (H - y), tol) << "ice particle " << q << " at y = " << y;
+      EXPECT_NEAR(s[0], 0.0, tol) << "ice particle " << q;
+      EXPECT_NEAR(s[1], 0.0, tol) << "ice particle " << q;
+    } else {  // water
+      ++n_water;
+      EXPECT_NEAR(s[0], -rho_w * g * (h - y), tol) << "water particle " << q << " at y = " << y;
+      EXPECT_EQ(s[0], s[4]) << "water particle " << q;
+      EXPECT_EQ(s[1], 0.f) << "water particle " << q;
+    }
+  }
+  EXPECT_GT(n_ice, 100u);
+  EXPECT_GT(n_water, 100u);
+}
+
+}  // namespace
+}  // namespace cdmpm::testing
