@@ -125,7 +125,13 @@ double evaluate(const json& v, const std::map<std::string, double>& vars, const 
 
 void substitute(json& j, const std::map<std::string, double>& vars, const std::string& file, const std::string& path) {
   if (is_expression(j)) {
-    j = evaluate(j, vars, file, path);
+    // An integral result is stored as a JSON integer, so that keys that take an integer (particles_per_cell,
+    // min_cells, ...) accept an expression such as "= (cells_per_H / 2)^2"; a literal 2.0 stays a float.
+    const double x = evaluate(j, vars, file, path);
+    if (std::abs(x) < 0x1p53 && x == std::nearbyint(x))
+      j = static_cast<int64_t>(x);
+    else
+      j = x;
   } else if (j.is_object()) {
     for (auto& item : j.items()) substitute(item.value(), vars, file, path.empty() ? item.key() : path + "." + item.key());
   } else if (j.is_array()) {

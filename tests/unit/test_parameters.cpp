@@ -47,6 +47,29 @@ TEST(SceneParameters, SetOverridesAParameterBeforeEvaluation) {
   EXPECT_DOUBLE_EQ(scene_from_json(j, "t.json", {"parameters.D=0.5"}).domain.dx, 0.05);
 }
 
+// An expression with an integral value is an integer, so integer keys accept it; other values stay numbers,
+// and a literal 4.0 is still not an integer.
+TEST(SceneParameters, IntegralExpressionsFillIntegerKeys) {
+  auto scene = [](nlohmann::json ppc) {
+    return nlohmann::json{{"parameters", {{"n", 2}}},
+                          {"dim", 2},
+                          {"domain", {{"size", {1.0, 1.0}}, {"dx", 0.1}}},
+                          {"time", {{"end", 1.0}, {"frame_interval", 0.5}}},
+                          {"materials", {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1e5}}}}},
+                          {"bodies", {{{"material", "water"}, {"particles_per_cell", ppc},
+                                       {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {0.5, 0.5}}}}}}}};
+  };
+  EXPECT_EQ(scene_from_json(scene("= n^2"), "t.json").bodies[0].particles_per_cell, 4);
+  for (const nlohmann::json bad : {nlohmann::json("= n^2 + 0.5"), nlohmann::json(4.0)}) {
+    try {
+      scene_from_json(scene(bad), "t.json");
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("particles_per_cell: expected an integer"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SceneParameters, ErrorsNameThePathAndTheProblem) {
   auto message = [](nlohmann::json j) {
     try {
