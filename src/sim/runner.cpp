@@ -81,14 +81,15 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
 struct OutputGrid {
   double dt, origin = 0;
   long long origin_index = 0;
+  double after(long long k) const { return origin + double(k + 1 - origin_index) * dt; }
   // The time of the event after k, no later than `end` (a grid time within 1e-9 dt of end is end itself, so
   // rounding of the grid cannot put a separate event a hair before the last one).
   double next(long long k, double end) const {
-    const double t = origin + double(k + 1 - origin_index) * dt;
+    const double t = after(k);
     return t > end - 1e-9 * dt ? end : t;
   }
   void resume_at(double t, long long k) {
-    const double n = origin + double(k + 1 - origin_index) * dt;
+    const double n = after(k);
     if (!(n > t && n <= t + 2 * dt)) {
       origin = t;
       origin_index = k;
