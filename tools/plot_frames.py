@@ -7,7 +7,6 @@ With no --frames, six frames evenly spread over the run are drawn, one panel eac
 """
 import argparse
 import os
-import re
 import sys
 
 import matplotlib
@@ -17,12 +16,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import read_vtu  # noqa: E402
-
-
-def frame_times(out):
-    pvd = open(os.path.join(out, "particles.pvd")).read()
-    return [(float(t), f) for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd)]
+from vtu import read_pvd, read_vtu  # noqa: E402
 
 
 def main():
@@ -31,7 +25,7 @@ def main():
     ap.add_argument("--frames", type=int, nargs="*")
     ap.add_argument("--png")
     args = ap.parse_args()
-    frames = frame_times(args.out)
+    frames = read_pvd(args.out)
     if not frames:
         sys.exit(f"{args.out}: no frames in particles.pvd")
     picks = args.frames if args.frames else sorted(set(np.linspace(0, len(frames) - 1, 6).astype(int)))

@@ -24,7 +24,6 @@ import json
 import math
 import os
 import subprocess
-import re
 import sys
 
 import matplotlib
@@ -47,22 +46,13 @@ def agreement_window(scene, d_max=0.6, band=0.3):
     return (1.5 * hi / (1 + band)) ** 2 / 3, (1.5 * lo / (1 - band)) ** 2 / 3
 
 
-def parameters(scene, overrides):
-    """The scene's parameters block evaluated in order ("= expr" strings refer to earlier parameters)."""
-    values = {}
-    for key, v in scene["parameters"].items():
-        v = overrides.get(key, v)
-        values[key] = eval(v[1:], {"__builtins__": {}}, dict(values)) if isinstance(v, str) else v
-    return values
-
-
 def crack_overhang(run_dir, scene, par):
-    """Overhang / H in the first frame with broken ice (damage > 0.5) in the slab's upper half near the edge."""
-    from vtu import read_vtu
+    """Overhang / H in the first frame with broken ice (damage > 0.5) in the slab's upper half near the edge.
+    par: the run's parameters as the program resolved them (summary.json)."""
+    from vtu import read_pvd, read_vtu
     H, x_edge, z_bed = par["H"], par["x_edge"], par["z_bed"]
     ice = list(scene["materials"]).index("ice")
-    pvd = open(os.path.join(run_dir, "particles.pvd")).read()
-    for _, f in sorted((float(t), f) for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd)):
+    for _, f in sorted(read_pvd(run_dir)):
         pts, fields = read_vtu(os.path.join(run_dir, f))
         m = fields["material"] == ice
         x, y, d = pts[m, 0], pts[m, 1], fields["damage"][m]
@@ -102,9 +92,8 @@ def main():
         neutral = scene["materials"]["ice"]["density"] / scene["materials"]["water"]["density"]
         args.ratios = [0, 0.2, 0.4, 0.6, 0.8, 0.9, round(neutral, 4), 0.95, 1.0]
     os.makedirs(args.out, exist_ok=True)
-    par = parameters(scene, {"cells_per_H": args.cells_per_H})
     ice = scene["materials"]["ice"]
-    s_scene = ice["tensile_strength"] / (ice["density"] * -scene.get("gravity", [0, -9.81])[1] * par["H"])
+    s_scene = ice["tensile_strength"] / (ice["density"] * -scene.get("gravity", [0, -9.81])[1] * H)
     s_lo, s_hi = agreement_window(scene)
     print(f"sigma_t / (rho_i g H) = {s_scene:.3f}; the cantilever is within 30 % of the linear model for every"
           f" D/H <= 0.6 only if it lies in [{s_lo:.3f}, {s_hi:.3f}]", flush=True)
@@ -135,8 +124,7 @@ def main():
         row = {"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
                "model_cantilever": cantilever, "wall_time": summary["wall_time"]}
         if args.crack_frames:
-            par = parameters(scene, {"D_over_H": r, "cells_per_H": args.cells_per_H})
-            row["crack_overhang_over_H"] = crack_overhang(run_dir, scene, par)
+            row["crack_overhang_over_H"] = crack_overhang(run_dir, scene, summary["parameters"])
             print(f"D/H = {r:g}: crack starts at an overhang of {row['crack_overhang_over_H']:.3f} H", flush=True)
         return row
 

@@ -2,7 +2,9 @@
 
     from vtu import read_vtu
     points, fields = read_vtu("out/particles_0010.vtu")   # points: (n, 3); fields: name -> array
+    frames = read_pvd("out")                               # [(time, "particles_NNNN.vtu"), ...] in file order
 """
+import os
 import re
 import numpy as np
 
@@ -26,3 +28,9 @@ def read_vtu(path):
     for k in ("connectivity", "offsets", "types"):
         arrays.pop(k, None)
     return points, arrays
+
+
+def read_pvd(out):
+    """The frames listed in OUT/particles.pvd as (time, file name) pairs, in the order written."""
+    pvd = open(os.path.join(out, "particles.pvd")).read()
+    return [(float(t), f) for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd)]

@@ -25,6 +25,19 @@ inline Mat<dim> kirchhoff_stress(const Material& m, const Particles<dim>& p, siz
   return Mat<dim>::Zero();
 }
 
+// Volume ratio J of particle q that turns its Kirchhoff stress into the Cauchy stress: det of the elastic F
+// for ice, the tracked J for water and rigid bodies.
+template <int dim>
+inline Real particle_volume_ratio(const Material& m, const Particles<dim>& p, size_t q) {
+  return m.kind == MaterialKind::Ice ? p.F[q].determinant() : p.J[q];
+}
+
+// Cauchy stress sigma = tau / J of particle q (written to the frames).
+template <int dim>
+inline Mat<dim> cauchy_stress(const Material& m, const Particles<dim>& p, size_t q) {
+  return kirchhoff_stress(m, p, q) / particle_volume_ratio(m, p, q);
+}
+
 // Cauchy pressure p = -tr(sigma)/dim of particle q (sigma = tau / J, J the elastic volume ratio for ice).
 template <int dim>
 inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t q) {
@@ -32,7 +45,7 @@ inline Real particle_pressure(const Material& m, const Particles<dim>& p, size_t
     case MaterialKind::Water:
     case MaterialKind::Rigid: return m.water.pressure(p.J[q]);
     case MaterialKind::Ice: {
-      const Real Je = p.F[q].determinant();
+      const Real Je = particle_volume_ratio(m, p, q);
       return m.ice.elastic.pressure_of_J(Je) / Je;
     }
   }

@@ -40,7 +40,7 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
   VtuField mat{"material", 1, {}, {}, std::vector<int32_t>(P.material.begin(), P.material.end())};
   VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
   VtuField J{"J", 1, std::vector<float>(n), {}, {}};
-  // Cauchy stress sigma = tau / J [Pa], a full 3x3 tensor (row-major, zero-padded in 2D) as ParaView expects.
+  // Cauchy stress [Pa] (material/stress.h), a full 3x3 tensor (row-major, zero-padded in 2D) as ParaView expects.
   VtuField stress{"stress", 9, std::vector<float>(9 * n, 0.f), {}, {}};
   // Ice state: damage in [0, 1], the hardening variable alpha and the current strength p0(alpha).
   const bool ice = std::any_of(sim.materials.begin(), sim.materials.end(),
@@ -58,8 +58,7 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     }
     pres.f32[q] = static_cast<float>(particle_pressure(m, P, q));
     J.f32[q] = static_cast<float>(P.J[q]);
-    const Real Jq = m.kind == MaterialKind::Ice ? P.F[q].determinant() : P.J[q];
-    const Mat<dim> sigma = kirchhoff_stress(m, P, q) / Jq;
+    const Mat<dim> sigma = cauchy_stress(m, P, q);
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) stress.f32[9 * q + 3 * a + b] = static_cast<float>(sigma(a, b));
     if (ice && m.kind == MaterialKind::Ice) {
