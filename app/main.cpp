@@ -4,6 +4,9 @@
 //   cdmpm check SCENE [--set path=value ...]
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
+//   cdmpm linear-waves DIR --depth h [--wall x] [--gravity g] [--box a w]
+//         (a finished run's gauge pairs against linear water-wave theory, src/validation/linear_wave_report.h;
+//          writes DIR/linear_waves.csv, prints JSON)
 //   cdmpm --help | --version
 // Exit codes: 0 success, 1 runtime error (I/O), 2 bad input (scene or command line), 3 run went unstable.
 #include <CLI/CLI.hpp>
@@ -13,6 +16,7 @@
 #include "scene/scene_loader.h"
 #include "sim/runner.h"
 #include "validation/impulse_wave.h"
+#include "validation/linear_wave_report.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"cdmpm: Material Point Method simulator of glacier calving and the tsunamis it raises"};
@@ -51,6 +55,24 @@ int main(int argc, char** argv) {
   impulse->add_option("--angle", wave.angle_degrees, "Slide impact angle alpha [degrees] (default 90)")->check(CLI::Range(0.0, 90.0));
   impulse->add_option("--distance", distances, "Distances x from impact [m] at which to give the amplitude (repeatable)");
 
+  std::string waves_dir;
+  cdmpm::LinearWaveOptions linear;
+  double wall_x = 0;
+  auto* linear_cmd = app.add_subcommand(
+      "linear-waves", "Carry each gauge's record to the next gauge by linear water-wave theory and compare the first "
+                      "crests; writes DIR/linear_waves.csv, prints JSON");
+  linear_cmd->add_option("dir", waves_dir, "Output directory of a finished run (waves.csv, probes.csv)")->required();
+  linear_cmd->add_option("--depth", linear.depth, "Still-water depth h between the gauges [m]")->required()
+      ->check(CLI::PositiveNumber);
+  linear_cmd->add_option("--gravity", linear.gravity, "Gravitational acceleration g [m/s^2] (default 9.81)")
+      ->check(CLI::PositiveNumber);
+  auto* wall_opt = linear_cmd->add_option("--wall", wall_x, "x of a fully reflecting end wall beyond the gauges [m]");
+  std::vector<double> box;
+  auto* box_opt = linear_cmd->add_option("--box", box, "The run released a box of water a high and w wide against the "
+                                                      "wall at x = 0: compare every gauge with the Cauchy-Poisson "
+                                                      "solution (writes DIR/cauchy_poisson.csv) [m m]")
+                      ->expected(2)->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -64,6 +86,18 @@ int main(int argc, char** argv) {
     for (double x : distances) out["amplitude_at"].push_back({{"x", x}, {"amplitude", w.amplitude_at(x, wave.depth)}});
     std::cout << out.dump(2) << "\n";
     return 0;
+  }
+
+  if (linear_cmd->parsed()) {
+    if (wall_opt->count() > 0) linear.wall_x = wall_x;
+    if (box_opt->count() > 0) linear.box = cdmpm::LinearWaveOptions::Box{box[0], box[1]};
+    try {
+      std::cout << cdmpm::linear_wave_report(waves_dir, linear).dump(2) << "\n";
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "cdmpm: error: " << e.what() << "\n";
+      return 2;
+    }
   }
 
   cdmpm::Scene scene;

@@ -3,11 +3,10 @@
 
 #include <algorithm>
 #include <fstream>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include "io/csv_table.h"
 #include "probe/wave_analysis.h"
 
 namespace cdmpm {
@@ -19,33 +18,8 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
     if (p.type == "wave_gauge") gauges.push_back(&p);
   if (gauges.empty()) return out;
 
-  std::ifstream in(probes_csv);
-  std::string line;
-  if (!in || !std::getline(in, line)) throw std::runtime_error(probes_csv + ": cannot read");
-  std::vector<std::string> names;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
-  std::vector<std::vector<double>> cols(names.size());
-  while (std::getline(in, line)) {
-    std::stringstream ls(line);
-    std::string c;
-    for (size_t i = 0; i < names.size(); ++i) {
-      double v = std::numeric_limits<double>::quiet_NaN();
-      if (std::getline(ls, c, ',')) {
-        try {
-          v = std::stod(c);
-        } catch (const std::exception&) {
-        }
-      }
-      cols[i].push_back(v);
-    }
-  }
-  auto column = [&](const std::string& name) -> const std::vector<double>& {
-    const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end()) throw std::runtime_error(probes_csv + ": no column " + name);
-    return cols[it - names.begin()];
-  };
-  const std::vector<double>& t = column("time");
+  const CsvTable probes = read_csv_table(probes_csv);
+  const std::vector<double> t = probes.numbers("time");
 
   struct Row {
     std::string name;
@@ -53,7 +27,7 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
     std::optional<Crest> crest;
   };
   std::vector<Row> rows;
-  for (const ProbeSpec* g : gauges) rows.push_back({g->name, g->position[0], first_crest(t, column(g->name))});
+  for (const ProbeSpec* g : gauges) rows.push_back({g->name, g->position[0], first_crest(t, probes.numbers(g->name))});
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.x < b.x; });
 
   std::ofstream csv(waves_csv, std::ios::trunc);

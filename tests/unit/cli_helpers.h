@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "io/csv_table.h"
+
 namespace cdmpm::testing {
 
 namespace fs = std::filesystem;
@@ -45,8 +47,9 @@ inline std::string quote(const std::string& s) {
 inline CliResult run_cdmpm(const std::vector<std::string>& args) {
   TempDir log;
   std::string cmd = quote(CDMPM_BINARY);
-  for (const auto& a : args) cmd += " " + quote(a);
-  cmd += " > " + quote(log / "out.txt") + " 2>&1";
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on " " + quote(a).
+  for (const auto& a : args) cmd.append(" ").append(quote(a));
+  cmd.append(" > ").append(quote(log / "out.txt")).append(" 2>&1");
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -79,18 +82,9 @@ inline std::string run_straight_other_threads_and_resumed(const TempDir& dir, co
 
 // probes.csv as column name -> values.
 inline std::map<std::string, std::vector<double>> read_probes(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
+  const CsvTable table = read_csv_table(path);
   std::map<std::string, std::vector<double>> cols;
-  while (std::getline(in, line)) {
-    std::stringstream ls(line);
-    std::string c;
-    for (size_t i = 0; std::getline(ls, c, ','); ++i) cols[names.at(i)].push_back(std::stod(c));
-  }
+  for (const std::string& name : table.header) cols[name] = table.numbers(name);
   return cols;
 }
 

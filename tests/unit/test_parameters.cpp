@@ -60,7 +60,7 @@ TEST(SceneParameters, IntegralExpressionsFillIntegerKeys) {
                                        {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {0.5, 0.5}}}}}}}};
   };
   EXPECT_EQ(scene_from_json(scene("= n^2"), "t.json").bodies[0].particles_per_cell, 4);
-  for (const nlohmann::json bad : {nlohmann::json("= n^2 + 0.5"), nlohmann::json(4.0)}) {
+  for (const nlohmann::json& bad : {nlohmann::json("= n^2 + 0.5"), nlohmann::json(4.0)}) {
     try {
       scene_from_json(scene(bad), "t.json");
       ADD_FAILURE() << bad << " accepted";

@@ -2,7 +2,9 @@
 //   hydrostatic column: bed pressure -> rho g h with first-order convergence, kinetic energy decays,
 //                       mass conserved to round-off;
 //   2D dam break: surge front against Martin & Moyce (1952) within 20 % at the coarse resolution;
-//   3D dam break: runs to its end with mass conserved and total energy never rising by more than 1 %.
+//   3D dam break: runs to its end with mass conserved and total energy never rising by more than 1 %;
+//   wave celerity: a mound of water released in a tank (the Cauchy-Poisson problem) makes the crests that linear
+//                  water-wave theory predicts, and `cdmpm linear-waves` carries one gauge's record to the next.
 // The full-resolution dam-break comparison is tools/validate_dam_break.py.
 #include <gtest/gtest.h>
 
@@ -12,6 +14,9 @@
 #include <numeric>
 
 #include "cli_helpers.h"
+#include "io/csv_table.h"
+#include "probe/wave_analysis.h"
+#include "validation/linear_dispersion.h"
 
 namespace cdmpm::testing {
 namespace {
@@ -127,6 +132,67 @@ TEST(DamBreak3D, RunsToEndWithMassConservedAndEnergyNotIncreasing) {
   }
   // The water actually moved: the front advanced at least two column widths.
   EXPECT_GT(c.at("front").back(), 3 * a);
+}
+
+// scenes/wave_celerity_2d.json at cells_per_h = 10: a box of water a = 0.05 h high and w = h wide against the wall
+// of a tank of depth h, released from rest. Linear theory (validation/linear_dispersion.h, cauchy_poisson_box)
+// gives the elevation at every gauge; its first crest trails sqrt(g h) (0.83 sqrt(g h) between x = 2 h and 4 h,
+// 0.91 between 4 h and 6 h), because the crest is made of waves a few h long. Nonlinearity changes crest speeds and heights by O(a / h) =
+// 5 %, more near the mound: from x = 4 h on, the simulated first crest must arrive within 5 % of the linear
+// arrival time with a height within 10 % of it, and travel between gauges within 10 % of the linear crest's speed.
+TEST(WaveCelerity, MoundReleasedInATankMakesTheCrestsOfLinearTheory) {
+  TempDir dir;
+  const std::string out = dir / "run";
+  const auto r = run_cdmpm({"run", source_path("scenes/wave_celerity_2d.json"), "--out", out, "--quiet", "--threads",
+                            "2", "--set", "parameters.cells_per_h=10"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = read_probes(out + "/probes.csv");
+  const nlohmann::json params = read_json(out + "/summary.json")["parameters"];
+  const double h = params["h"], a = params["a"], w = params["w"];
+  std::vector<double> t = c.at("time");
+  // A last sample at the run's end, off the probes' interval, is left out (the linear record is evenly spaced).
+  const bool off_grid = std::abs((t.end()[-1] - t.end()[-2]) - (t[1] - t[0])) > 1e-6;
+  if (off_grid) t.pop_back();
+  struct Crests {
+    double x;
+    Crest sim, linear;
+  };
+  std::vector<Crests> crests;
+  for (const char* gauge : {"gauge_4h", "gauge_6h", "gauge_8h"}) {
+    const double x = std::stod(std::string(gauge).substr(6)) * h;
+    std::vector<double> eta = c.at(gauge);
+    eta.resize(t.size());
+    const auto sim = first_crest(t, eta), linear = first_crest(t, cauchy_poisson_box(x, t, a, w, g, h));
+    ASSERT_TRUE(sim && linear) << gauge;
+    EXPECT_NEAR(sim->time, linear->time, 0.05 * linear->time) << gauge;
+    EXPECT_NEAR(sim->amplitude, linear->amplitude, 0.10 * linear->amplitude) << gauge;
+    crests.push_back({x, *sim, *linear});
+  }
+  for (size_t i = 0; i + 1 < crests.size(); ++i) {
+    const double dx = crests[i + 1].x - crests[i].x;
+    const double c_sim = dx / (crests[i + 1].sim.time - crests[i].sim.time);
+    const double c_lin = dx / (crests[i + 1].linear.time - crests[i].linear.time);
+    EXPECT_NEAR(c_sim, c_lin, 0.10 * c_lin) << crests[i].x << " -> " << crests[i + 1].x;
+  }
+  // Nearer the mound the crest runs below 0.9 sqrt(g h) in linear theory itself (between 2 h and 4 h).
+  const auto linear_2h = first_crest(t, cauchy_poisson_box(2 * h, t, a, w, g, h));
+  ASSERT_TRUE(linear_2h);
+  EXPECT_LT(2 * h / (crests[0].linear.time - linear_2h->time), 0.9 * std::sqrt(g * h));
+
+  // The same comparison gauge to gauge: each record carried to the next gauge by linear theory.
+  const auto lw = run_cdmpm({"linear-waves", out, "--depth", std::to_string(h), "--wall", "14"});
+  ASSERT_EQ(lw.exit_code, 0) << lw.output;
+  const auto pairs = nlohmann::json::parse(lw.output)["pairs"];
+  ASSERT_EQ(pairs.size(), 3u);
+  for (const auto& p : pairs) {
+    if (double(p["x_from"]) < 4 * h) continue;
+    EXPECT_NEAR(double(p["celerity"]), double(p["linear_celerity"]), 0.10 * double(p["linear_celerity"])) << p.dump();
+  }
+  EXPECT_EQ(read_csv_table(out + "/linear_waves.csv").rows.size(), 3u);
+  // Bad input: no depth, a wall inside the gauges, a directory without a run.
+  EXPECT_EQ(run_cdmpm({"linear-waves", out}).exit_code, 2);
+  EXPECT_EQ(run_cdmpm({"linear-waves", out, "--depth", "1", "--wall", "5"}).exit_code, 2);
+  EXPECT_EQ(run_cdmpm({"linear-waves", dir / "nothing", "--depth", "1"}).exit_code, 2);
 }
 
 }  // namespace
