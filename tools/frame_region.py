@@ -7,7 +7,7 @@ one place of a run without ParaView (for example the ice passing a support's edg
                                            [--damage 0.5] [--list]
 FRAME is the frame number (particles_FRAME.vtu). --material keeps one material index (order of the scene's
 "materials"). --list prints every particle (position, stress, J, damage) sorted by height then x.
-Stresses in kPa, tension positive.
+Stresses and pressure in kPa, tension positive; u and w the horizontal and vertical velocity [m/s].
 """
 import argparse
 import os
@@ -43,7 +43,8 @@ def main():
     if "damage" in f:
         print(f"  broken (damage > {args.damage:g}): {(f['damage'][idx] > args.damage).sum()}")
     S = f["stress"][idx] / 1e3 if "stress" in f else None
-    rows = [("pressure", f["pressure"][idx] / 1e3), ("J", f["J"][idx])]
+    rows = [("pressure", f["pressure"][idx] / 1e3), ("J", f["J"][idx]), ("u", f["velocity"][idx, 0]),
+            ("w", f["velocity"][idx, 1])]
     if S is not None:
         rows += [("sigma_xx", S[:, 0]), ("sigma_yy", S[:, 4]), ("sigma_xy", S[:, 1])]
     for name, v in rows:

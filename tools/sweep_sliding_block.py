@@ -8,7 +8,7 @@ sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) 
 ice reaches it in uniaxial tension (peak within 5 %).
 
     /usr/bin/python3 tools/sweep_sliding_block.py [--cells-per-H 16] [--ratios 0 0.2 ...] [--out DIR] [--jobs 2]
-                                                  [--crack-frames DT]
+                                                  [--crack-frames DT] [--set PATH=VALUE ...]
 Writes DIR/sliding_block_sweep.csv and DIR/sliding_block_sweep.png; each run's outputs are in DIR/D_<ratio>/.
 With --crack-frames DT the runs write frames every DT seconds and the CSV gets crack_overhang_over_H: the
 overhang (ice front beyond the bed edge) in the first frame with a broken ice particle (damage > 0.5) in the
@@ -85,6 +85,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=1, help="cases run at once (e.g. 2 on 2 cores)")
     ap.add_argument("--crack-frames", type=float, metavar="DT",
                     help="write frames every DT s and report the overhang at which the crack starts")
+    ap.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
+                    help="passed on to every run (repeatable), e.g. --set parameters.push_speed=1")
     args = ap.parse_args()
     scene = json.load(open(SCENE))
     H = scene["parameters"]["H"]
@@ -105,6 +107,8 @@ def main():
                 else ["--set", "output.frames=false"])
         if args.threads:
             cmd += ["--threads", str(args.threads)]
+        for extra in args.set:
+            cmd += ["--set", extra]
         print(" ".join(cmd), flush=True)
         rc = subprocess.run(cmd).returncode
         summary = json.load(open(os.path.join(run_dir, "summary.json")))
@@ -160,7 +164,7 @@ def main():
     ax.set_ylabel("L/H")
     ax.set_ylim(0, 8)
     ax.legend(fontsize=8)
-    ax.set_title(f"sliding block, H/dx = {args.cells_per_H}")
+    ax.set_title(f"sliding block, H/dx = {args.cells_per_H}" + "".join(f", {x}" for x in args.set), fontsize=9)
     fig.tight_layout()
     png = os.path.join(args.out, "sliding_block_sweep.png")
     fig.savefig(png, dpi=120)
