@@ -26,12 +26,20 @@ double dispersion_wavenumber(double omega, double g, double h) {
   return k;
 }
 
-double group_speed(double omega, double g, double h) {
-  const double k = dispersion_wavenumber(omega, g, h);
+namespace {
+
+// c_g = (omega / k) / 2 (1 + 2 k h / sinh(2 k h)) for a wavenumber k > 0 that solves the dispersion relation.
+double group_speed_of(double omega, double k, double h) {
   const double kh = k * h;
   // 2 k h / sinh(2 k h) tends to 1 as k h -> 0 and underflows harmlessly to 0 for deep water.
   const double ratio = kh < 1e-8 ? 1.0 : (kh > 350 ? 0.0 : 2 * kh / std::sinh(2 * kh));
   return 0.5 * (omega / k) * (1 + ratio);
+}
+
+}  // namespace
+
+double group_speed(double omega, double g, double h) {
+  return group_speed_of(omega, dispersion_wavenumber(omega, g, h), h);
 }
 
 std::vector<double> propagate_linear(const std::vector<double>& eta, double dt, double distance, double g, double h,
@@ -65,7 +73,7 @@ std::vector<double> propagate_linear(const std::vector<double>& eta, double dt, 
     const double k = dispersion_wavenumber(omega, g, h);
     // A component that a path delays by more than the padding, d / c_g > (N - n) dt, would wrap around the
     // transform's period onto the record: it arrives after the record's end, so it is left out.
-    const double cg = m == 0 ? std::sqrt(g * h) : group_speed(omega, g, h), max_delay = double(N - n) * dt;
+    const double cg = m == 0 ? std::sqrt(g * h) : group_speed_of(omega, k, h), max_delay = double(N - n) * dt;
     std::complex<double> path = 0;
     if (distance <= max_delay * cg) path += std::polar(1.0, -k * distance);
     if (reflected_distance && *reflected_distance <= max_delay * cg) path += std::polar(1.0, -k * *reflected_distance);

@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -13,6 +12,33 @@
 #include "validation/linear_dispersion.h"
 
 namespace cdmpm {
+namespace {
+
+// Rows of JSON objects as CSV with the given columns in that order; null (a missing crest) is written as nan.
+void write_csv(const std::string& path, const std::vector<std::string>& columns, const nlohmann::json& rows) {
+  std::ostringstream csv;
+  csv.precision(10);
+  for (size_t c = 0; c < columns.size(); ++c) csv << (c ? "," : "") << columns[c];
+  csv << '\n';
+  for (const auto& row : rows) {
+    for (size_t c = 0; c < columns.size(); ++c) {
+      const nlohmann::json& v = row.at(columns[c]);
+      csv << (c ? "," : "");
+      if (v.is_string())
+        csv << v.get<std::string>();
+      else if (v.is_null())
+        csv << "nan";
+      else
+        csv << v.get<double>();
+    }
+    csv << '\n';
+  }
+  std::ofstream file(path, std::ios::trunc);
+  file << csv.str();
+  if (!file) throw std::runtime_error(path + ": cannot write");
+}
+
+}  // namespace
 
 nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOptions& options) {
   if (!(options.depth > 0)) throw std::runtime_error("linear wave report: the depth must be positive");
@@ -38,23 +64,22 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
     throw std::runtime_error(probes.path + ": samples not evenly spaced in time (row " + std::to_string(n + 2) +
                              "); the linear propagation needs a uniform record");
   t.resize(n);
-  auto record = [&](const std::string& gauge) {
-    std::vector<double> r = probes.numbers(gauge);
-    r.resize(n);
-    return r;
-  };
+  // Each gauge's evenly spaced record and its simulated first crest, read and found once.
+  std::vector<std::vector<double>> records;
+  std::vector<std::optional<Crest>> crests;
+  for (const std::string& name : names) {
+    records.push_back(probes.numbers(name));
+    records.back().resize(n);
+    crests.push_back(first_crest(t, records.back()));
+  }
 
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  auto value = [&](const std::optional<Crest>& c, double Crest::*m) { return c ? (*c).*m : nan; };
   auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  nlohmann::json rows = nlohmann::json::array();
-  std::ostringstream csv;  // written to the file only once every pair is done
-  csv.precision(10);
-  csv << "from,to,x_from,x_to,arrival_from,arrival_to,linear_arrival_to,amplitude_to,linear_amplitude_to,celerity,"
-         "linear_celerity\n";
+  auto time = [&](const std::optional<Crest>& c) { return c ? nlohmann::json(c->time) : nlohmann::json(nullptr); };
+  auto height = [&](const std::optional<Crest>& c) { return c ? nlohmann::json(c->amplitude) : nlohmann::json(nullptr); };
+  nlohmann::json pairs = nlohmann::json::array();
   for (size_t i = 0; i + 1 < names.size(); ++i) {
-    const std::vector<double> up = record(names[i]), down = record(names[i + 1]);
-    const auto c_up = first_crest(t, up), c_down = first_crest(t, down);
+    const std::vector<double>& up = records[i];
+    const auto &c_up = crests[i], &c_down = crests[i + 1];
     std::optional<Crest> c_lin;
     bool wet = true;
     for (double v : up) wet = wet && std::isfinite(v);
@@ -64,29 +89,20 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
       c_lin = first_crest(t, propagate_linear(up, dt, xs[i + 1] - xs[i], options.gravity, options.depth, reflected));
     }
     const double dx = xs[i + 1] - xs[i];
-    const double c_sim = c_up && c_down ? dx / (c_down->time - c_up->time) : nan;
-    const double c_linear = c_up && c_lin ? dx / (c_lin->time - c_up->time) : nan;
-    csv << names[i] << ',' << names[i + 1] << ',' << xs[i] << ',' << xs[i + 1] << ',' << value(c_up, &Crest::time)
-        << ',' << value(c_down, &Crest::time) << ',' << value(c_lin, &Crest::time) << ','
-        << value(c_down, &Crest::amplitude) << ',' << value(c_lin, &Crest::amplitude) << ',' << c_sim << ','
-        << c_linear << '\n';
-    rows.push_back(nlohmann::json{{"from", names[i]}, {"to", names[i + 1]}, {"x_from", xs[i]}, {"x_to", xs[i + 1]},
-                    {"arrival_from", num(value(c_up, &Crest::time))}, {"arrival_to", num(value(c_down, &Crest::time))},
-                    {"linear_arrival_to", num(value(c_lin, &Crest::time))},
-                    {"amplitude_to", num(value(c_down, &Crest::amplitude))},
-                    {"linear_amplitude_to", num(value(c_lin, &Crest::amplitude))}, {"celerity", num(c_sim)},
-                    {"linear_celerity", num(c_linear)}});
+    const double c_sim = c_up && c_down ? dx / (c_down->time - c_up->time) : NAN;
+    const double c_linear = c_up && c_lin ? dx / (c_lin->time - c_up->time) : NAN;
+    pairs.push_back(nlohmann::json{{"from", names[i]}, {"to", names[i + 1]}, {"x_from", xs[i]}, {"x_to", xs[i + 1]},
+                                   {"arrival_from", time(c_up)}, {"arrival_to", time(c_down)},
+                                   {"linear_arrival_to", time(c_lin)}, {"amplitude_to", height(c_down)},
+                                   {"linear_amplitude_to", height(c_lin)}, {"celerity", num(c_sim)},
+                                   {"linear_celerity", num(c_linear)}});
   }
-  nlohmann::json report = {{"pairs", rows}};
+  nlohmann::json report = {{"pairs", pairs}};
 
   // The released box: every gauge against the Cauchy-Poisson solution (with the end wall's image).
-  std::ostringstream box_csv;
   if (options.box) {
-    box_csv.precision(10);
-    box_csv << "gauge,x,arrival_time,amplitude,linear_arrival_time,linear_amplitude\n";
     report["cauchy_poisson"] = nlohmann::json::array();
     for (size_t i = 0; i < names.size(); ++i) {
-      const auto sim = first_crest(t, record(names[i]));
       std::vector<double> eta =
           cauchy_poisson_box(xs[i], t, options.box->height, options.box->half_width, options.gravity, options.depth);
       if (options.wall_x) {
@@ -95,22 +111,20 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
         for (size_t j = 0; j < eta.size(); ++j) eta[j] += image[j];
       }
       const auto lin = first_crest(t, eta);
-      box_csv << names[i] << ',' << xs[i] << ',' << value(sim, &Crest::time) << ',' << value(sim, &Crest::amplitude)
-              << ',' << value(lin, &Crest::time) << ',' << value(lin, &Crest::amplitude) << '\n';
       report["cauchy_poisson"].push_back(nlohmann::json{
-          {"gauge", names[i]}, {"x", xs[i]}, {"arrival_time", num(value(sim, &Crest::time))},
-          {"amplitude", num(value(sim, &Crest::amplitude))}, {"linear_arrival_time", num(value(lin, &Crest::time))},
-          {"linear_amplitude", num(value(lin, &Crest::amplitude))}});
+          {"gauge", names[i]}, {"x", xs[i]}, {"arrival_time", time(crests[i])}, {"amplitude", height(crests[i])},
+          {"linear_arrival_time", time(lin)}, {"linear_amplitude", height(lin)}});
     }
   }
-  std::ofstream file(out_dir + "/linear_waves.csv", std::ios::trunc);
-  file << csv.str();
-  if (!file) throw std::runtime_error(out_dir + "/linear_waves.csv: cannot write");
-  if (options.box) {
-    std::ofstream f(out_dir + "/cauchy_poisson.csv", std::ios::trunc);
-    f << box_csv.str();
-    if (!f) throw std::runtime_error(out_dir + "/cauchy_poisson.csv: cannot write");
-  }
+  // Written once everything is computed, so an error leaves no half-written file.
+  write_csv(out_dir + "/linear_waves.csv",
+            {"from", "to", "x_from", "x_to", "arrival_from", "arrival_to", "linear_arrival_to", "amplitude_to",
+             "linear_amplitude_to", "celerity", "linear_celerity"},
+            report["pairs"]);
+  if (options.box)
+    write_csv(out_dir + "/cauchy_poisson.csv",
+              {"gauge", "x", "arrival_time", "amplitude", "linear_arrival_time", "linear_amplitude"},
+              report["cauchy_poisson"]);
   return report;
 }
 

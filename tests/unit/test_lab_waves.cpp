@@ -23,8 +23,7 @@ namespace {
 struct LabRun {
   nlohmann::json summary;
   std::map<std::string, std::vector<double>> probes;
-  std::vector<std::vector<std::string>> waves;  // rows of waves.csv after the header
-  std::string header;
+  CsvTable waves;
 };
 
 LabRun run_lab(const TempDir& dir, const std::string& mechanism) {
@@ -35,14 +34,7 @@ LabRun run_lab(const TempDir& dir, const std::string& mechanism) {
   LabRun run;
   run.summary = read_json(out + "/summary.json");
   run.probes = read_probes(out + "/probes.csv");
-  std::ifstream csv(out + "/waves.csv");
-  std::getline(csv, run.header);
-  for (std::string line; std::getline(csv, line);) {
-    std::vector<std::string> row;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) row.push_back(c);
-    run.waves.push_back(row);
-  }
+  run.waves = read_csv_table(out + "/waves.csv");
   return run;
 }
 
@@ -53,8 +45,8 @@ TEST(LabWaves, CoarseMechanismsConserveWaterAndFallMakesTheLargestWave) {
     runs[m] = run_lab(dir, m);
     const LabRun& r = runs[m];
     ASSERT_EQ(r.summary["status"], "completed") << m;
-    EXPECT_EQ(r.header, "gauge,x,amplitude,arrival_time") << m;
-    ASSERT_EQ(r.waves.size(), 5u) << m;
+    EXPECT_EQ(r.waves.header, (std::vector<std::string>{"gauge", "x", "amplitude", "arrival_time"})) << m;
+    ASSERT_EQ(r.waves.rows.size(), 5u) << m;
     const auto& mass = r.probes.at("water_mass");
     EXPECT_LE(std::abs(mass.back() - mass.front()), 1e-3 * mass.front()) << m;
     ASSERT_TRUE(r.summary["max_amplitude"].is_number()) << m;
@@ -81,11 +73,11 @@ TEST(LabWaves, CoarseMechanismsConserveWaterAndFallMakesTheLargestWave) {
   }
   // GF leading crest: pairs (x/h 4 -> 6, 6 -> 8, 8 -> 12) at sqrt(g h).
   const double g = 9.81, h = runs["gf"].summary["parameters"]["h"];
-  const auto& w = runs["gf"].waves;
-  for (size_t i = 1; i + 1 < w.size(); ++i) {
-    const double x0 = std::stod(w[i][1]), x1 = std::stod(w[i + 1][1]);
-    const double c = (x1 - x0) / (std::stod(w[i + 1][3]) - std::stod(w[i][3]));
-    EXPECT_NEAR(c, std::sqrt(g * h), 0.1 * std::sqrt(g * h)) << w[i][0] << " -> " << w[i + 1][0];
+  const auto gauge = runs["gf"].waves.strings("gauge");
+  const auto x = runs["gf"].waves.numbers("x"), t = runs["gf"].waves.numbers("arrival_time");
+  for (size_t i = 1; i + 1 < x.size(); ++i) {
+    const double c = (x[i + 1] - x[i]) / (t[i + 1] - t[i]);
+    EXPECT_NEAR(c, std::sqrt(g * h), 0.1 * std::sqrt(g * h)) << gauge[i] << " -> " << gauge[i + 1];
   }
 }
 

@@ -72,15 +72,11 @@ TEST(SlidingBlock, CoarseRunDetectsFirstIceberg) {
   EXPECT_GT(b["centroid"][0].get<double>(), x_edge - 0.5 * H);
   // icebergs.csv: header and one row per body per frame (the glacier, id 0, in every frame), plus the
   // detection of the first iceberg (a glacier row and at least one berg row).
-  std::ifstream csv(dir / "out/icebergs.csv");
-  std::string header, line;
-  std::getline(csv, header);
-  EXPECT_EQ(header, "frame,time,id,particles,volume,length,height,centroid_x,centroid_y");
+  const CsvTable csv = read_csv_table(dir / "out/icebergs.csv");
+  EXPECT_EQ(csv.header, (std::vector<std::string>{"frame", "time", "id", "particles", "volume", "length", "height",
+                                                  "centroid_x", "centroid_y"}));
   int glacier_rows = 0, berg_rows = 0;
-  while (std::getline(csv, line)) {
-    const auto c1 = line.find(','), c2 = line.find(',', c1 + 1), c3 = line.find(',', c2 + 1);
-    (std::stoi(line.substr(c2 + 1, c3 - c2 - 1)) == 0 ? glacier_rows : berg_rows)++;
-  }
+  for (double id : csv.numbers("id")) (id == 0 ? glacier_rows : berg_rows)++;
   EXPECT_EQ(glacier_rows, static_cast<int>(s["sim_time"].get<double>()) + 2);  // frame_interval 1 s
   EXPECT_GT(berg_rows, 0);
 }
