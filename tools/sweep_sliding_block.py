@@ -14,7 +14,9 @@ With --crack-frames DT the runs write frames every DT seconds and the CSV gets c
 overhang (ice front beyond the bed edge) in the first frame with a broken ice particle (damage > 0.5) in the
 upper half of the slab within H of the edge, i.e. where the bending crack starts; L/H is the detached
 iceberg's length, which also holds any ice behind the edge that the crack cuts off.
-A run with no iceberg before the scene's end time reports the overhang it reached (L/H larger than that).
+A run with no iceberg before the scene's end time reports the overhang it reached (L/H larger than that), as
+"no_failure", or as "debris_no_iceberg" when the intact slab got more than H/4 shorter: the overhang broke into pieces
+smaller than an iceberg (output.icebergs.min_cells).
 The default ratios include neutral buoyancy, D/H = rho_i/rho_w, where the overhang carries no net load.
 """
 import argparse
@@ -61,6 +63,33 @@ def crack_overhang(run_dir, scene, par):
     return math.nan
 
 
+def apply_sets(scene, sets):
+    """The --set PATH=VALUE overrides that the models depend on, applied to the scene as the program applies them.
+    The models need numbers: an override of H, a density, the tensile strength or gravity given as an expression
+    ("= ...") is refused, because this tool cannot evaluate it."""
+    model_inputs = ("parameters.H", "materials.ice.density", "materials.ice.tensile_strength",
+                    "materials.water.density", "gravity")
+    for item in sets:
+        path, _, text = item.partition("=")
+        try:
+            value = json.loads(text)
+        except json.JSONDecodeError:
+            value = text
+        if path in model_inputs and not isinstance(value, (int, float, list)):
+            sys.exit(f"sweep_sliding_block.py: --set {item}: the bending models need a number for {path}")
+        node, keys = scene, path.split(".")
+        for k in keys[:-1]:
+            node = node.setdefault(k, {})
+        node[keys[-1]] = value
+
+
+def glacier_shortening(run_dir):
+    """How much shorter the glacier (body 0 of icebergs.csv, the largest intact body) is along the flow in the
+    last frame than in the first. Without an iceberg, a slab whose overhang stays whole keeps its length."""
+    rows = [row for row in csv.DictReader(open(os.path.join(run_dir, "icebergs.csv"))) if row["id"] == "0"]
+    return float(rows[0]["length"]) - float(rows[-1]["length"])
+
+
 def models(scene, ratio):
     p = scene["parameters"]
     H = p["H"]
@@ -89,6 +118,7 @@ def main():
                     help="passed on to every run (repeatable), e.g. --set parameters.push_speed=1")
     args = ap.parse_args()
     scene = json.load(open(SCENE))
+    apply_sets(scene, args.set)
     H = scene["parameters"]["H"]
     if args.ratios is None:
         neutral = scene["materials"]["ice"]["density"] / scene["materials"]["water"]["density"]
@@ -113,6 +143,8 @@ def main():
         rc = subprocess.run(cmd).returncode
         summary = json.load(open(os.path.join(run_dir, "summary.json")))
         first = summary.get("first_iceberg")
+        if summary["parameters"]["H"] != H:
+            sys.exit(f"sweep_sliding_block.py: the run resolved H = {summary['parameters']['H']}, the models use {H}")
         linear, cantilever = models(scene, r)
         if rc == 0 and first:
             status, L_H, t = "iceberg", first["length"] / H, first["time"]
@@ -122,6 +154,10 @@ def main():
             probes = list(csv.DictReader(open(os.path.join(run_dir, "probes.csv"))))
             overhang = max(float(p["ice_front"]) for p in probes) - float(probes[0]["ice_front"])
             status = "no_failure" if rc == 0 else f"exit_{rc}"
+            if rc == 0 and glacier_shortening(run_dir) > 0.25 * H:
+                # The intact slab got shorter without an iceberg: the overhang broke into pieces smaller than
+                # output.icebergs.min_cells (debris).
+                status = "debris_no_iceberg"
             L_H, t = overhang / H, summary["sim_time"]
         print(f"D/H = {r:g}: {status}, L/H = {L_H:.3f} (linear model {linear:.3f}, cantilever {cantilever:.3f}),"
               f" t = {t:.1f} s, wall {summary['wall_time']:.0f} s", flush=True)
@@ -152,10 +188,12 @@ def main():
     can = [models(scene, x)[1] for x in d]
     ax.plot(d, lin, "k-", label="bending model 2σt/[3ρi g H(1-D/H)]")
     ax.plot(d, can, "k--", label="cantilever with buoyancy")
-    for status, marker in (("iceberg", "o"), ("no_failure", "^")):
+    for status, marker in (("iceberg", "o"), ("no_failure", "^"), ("debris_no_iceberg", "x")):
         pts = [(row["D_over_H"], row["L_over_H"]) for row in rows if row["status"] == status]
         if pts:
-            ax.plot(*zip(*pts), marker, label="cdmpm" + (" (no failure: overhang reached)" if status != "iceberg" else ""))
+            label = {"iceberg": "", "no_failure": " (no failure: overhang reached)",
+                     "debris_no_iceberg": " (broke into debris: overhang reached)"}[status]
+            ax.plot(*zip(*pts), marker, label="cdmpm" + label)
     if args.crack_frames:
         pts = [(row["D_over_H"], row["crack_overhang_over_H"]) for row in rows if row["status"] == "iceberg"]
         if pts:
