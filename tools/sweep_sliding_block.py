@@ -188,11 +188,10 @@ def main():
     can = [models(scene, x)[1] for x in d]
     ax.plot(d, lin, "k-", label="bending model 2σt/[3ρi g H(1-D/H)]")
     ax.plot(d, can, "k--", label="cantilever with buoyancy")
-    for status, marker in (("iceberg", "o"), ("no_failure", "^"), ("debris_no_iceberg", "x")):
+    for status, marker, label in (("iceberg", "o", ""), ("no_failure", "^", " (no failure: overhang reached)"),
+                                  ("debris_no_iceberg", "x", " (broke into debris: overhang reached)")):
         pts = [(row["D_over_H"], row["L_over_H"]) for row in rows if row["status"] == status]
         if pts:
-            label = {"iceberg": "", "no_failure": " (no failure: overhang reached)",
-                     "debris_no_iceberg": " (broke into debris: overhang reached)"}[status]
             ax.plot(*zip(*pts), marker, label="cdmpm" + label)
     if args.crack_frames:
         pts = [(row["D_over_H"], row["crack_overhang_over_H"]) for row in rows if row["status"] == "iceberg"]

@@ -1,6 +1,7 @@
 // linear_wave_report.cpp - gauge pairs against linear theory (see linear_wave_report.h).
 #include "validation/linear_wave_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -80,15 +81,13 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
   for (size_t i = 0; i + 1 < names.size(); ++i) {
     const std::vector<double>& up = records[i];
     const auto &c_up = crests[i], &c_down = crests[i + 1];
+    const double dx = xs[i + 1] - xs[i];
     std::optional<Crest> c_lin;
-    bool wet = true;
-    for (double v : up) wet = wet && std::isfinite(v);
-    if (wet) {
+    if (std::all_of(up.begin(), up.end(), [](double v) { return std::isfinite(v); })) {
       std::optional<double> reflected;
       if (options.wall_x) reflected = 2 * *options.wall_x - xs[i] - xs[i + 1];
-      c_lin = first_crest(t, propagate_linear(up, dt, xs[i + 1] - xs[i], options.gravity, options.depth, reflected));
+      c_lin = first_crest(t, propagate_linear(up, dt, dx, options.gravity, options.depth, reflected));
     }
-    const double dx = xs[i + 1] - xs[i];
     const double c_sim = c_up && c_down ? dx / (c_down->time - c_up->time) : NAN;
     const double c_linear = c_up && c_lin ? dx / (c_lin->time - c_up->time) : NAN;
     pairs.push_back(nlohmann::json{{"from", names[i]}, {"to", names[i + 1]}, {"x_from", xs[i]}, {"x_to", xs[i + 1]},

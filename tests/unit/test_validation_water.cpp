@@ -180,7 +180,8 @@ TEST(WaveCelerity, MoundReleasedInATankMakesTheCrestsOfLinearTheory) {
   EXPECT_LT(2 * h / (crests[0].linear.time - linear_2h->time), 0.9 * std::sqrt(g * h));
 
   // The same comparison gauge to gauge: each record carried to the next gauge by linear theory.
-  const auto lw = run_cdmpm({"linear-waves", out, "--depth", std::to_string(h), "--wall", "14"});
+  const auto lw = run_cdmpm({"linear-waves", out, "--depth", std::to_string(h), "--wall",
+                             std::to_string(double(params["tank_length"]))});
   ASSERT_EQ(lw.exit_code, 0) << lw.output;
   const auto pairs = nlohmann::json::parse(lw.output)["pairs"];
   ASSERT_EQ(pairs.size(), 3u);
