@@ -14,7 +14,7 @@
 #include <iostream>
 
 #include "scene/scene_loader.h"
-#include "sim/runner.h"
+#include "run/runner.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
 

@@ -1,4 +1,6 @@
-// boundary.h - boundary conditions on grid nodes: domain walls and fixed obstacles.
+// boundary.h - boundary conditions on grid nodes: the interface every boundary type implements, and the
+// registry that builds them (one file per type: boundary/walls.cpp, half_plane.cpp, box_obstacle.cpp,
+// bathymetry.cpp; the list in boundary/registry.cpp).
 //
 // Every boundary is a solid region with an outward normal n (pointing from the solid into the material).
 // A grid node inside the solid gets one of three conditions (Stomakhin et al. 2013, sec. 6; Jiang et al.
@@ -43,6 +45,7 @@
 #include "core/types.h"
 #include "grid/grid.h"
 #include "scene/scene.h"
+#include "scene/scene_reader.h"
 
 namespace cdmpm {
 
@@ -66,13 +69,25 @@ inline void apply_condition(BoundaryCondition c, Real friction, const Vec<dim>& 
   }
 }
 
+// What a boundary is built with besides its own scene keys: the domain extent and the grid spacing.
+template <int dim>
+struct BoundaryContext {
+  Vec<dim> domain_size;
+  Real dx;
+};
+
 template <int dim>
 class Boundary {
  public:
-  Boundary(BoundaryCondition c, Real friction, Real dx) : condition_(c), friction_(friction), tol_(node_tolerance(dx)) {}
+  // Reads the keys every boundary has: "condition" (sticky, slip, separate; default separate) and "friction"
+  // (Coulomb coefficient, default 0); the type's own keys are read by the derived class.
+  Boundary(const SceneReader& r, const Node& n, Real dx);
   virtual ~Boundary() = default;
   // Applies the condition to velocity v of the node at position x if x is inside the solid.
   virtual void apply(const Vec<dim>& x, Vec<dim>& v) const = 0;
+  // True if point x lies inside the solid at t = 0: seeding leaves such points empty (a moving box, which may
+  // grip the material inside it, answers false).
+  virtual bool is_solid(const Vec<dim>& x) const = 0;
   // Moves the solid to its position at time t (moving obstacles only).
   virtual void move_to(double) {}
   // Adds ghost-node mass and momentum to mirror nodes (slip walls and static slip boxes; see above).
@@ -84,6 +99,8 @@ class Boundary {
 
   // Distance within which a grid node counts as on a face (see above).
   static Real node_tolerance(Real dx) { return node_tolerance_cells * dx; }
+  // The keys every boundary takes (the type's own keys are added to these).
+  static Strings common_keys() { return {"type", "condition", "friction"}; }
 
  protected:
   BoundaryCondition condition_;
@@ -91,9 +108,25 @@ class Boundary {
   Real tol_;  // node_tolerance(dx)
 };
 
-// Builds a boundary from its validated scene description. domain_size: the scene's domain extent; dx: the
-// grid spacing.
+// Defines the registry's factory NAME<dim> (2D and 3D) building a CLASS<dim> from its scene object; each boundary
+// file ends with one (boundary/registry.cpp lists them).
+#define CDMPM_BOUNDARY_FACTORY(NAME, CLASS)                                                                    \
+  template <int dim>                                                                                         \
+  std::unique_ptr<Boundary<dim>> NAME(const SceneReader& r, const Node& n, const BoundaryContext<dim>& ctx) { \
+    return std::make_unique<CLASS<dim>>(r, n, ctx);                                                          \
+  }                                                                                                          \
+  template std::unique_ptr<Boundary<2>> NAME<2>(const SceneReader&, const Node&, const BoundaryContext<2>&); \
+  template std::unique_ptr<Boundary<3>> NAME<3>(const SceneReader&, const Node&, const BoundaryContext<3>&);
+
+// The boundary types of the registry (boundary/registry.cpp).
+Strings boundary_types();
+
+// Builds a boundary of a registered type from its scene object, reading and validating its keys: the loader
+// calls it to check the scene (throws SceneError), the simulation to build the boundaries of a checked scene.
 template <int dim>
-std::unique_ptr<Boundary<dim>> make_boundary(const BoundarySpec& spec, const Vec<dim>& domain_size, Real dx);
+std::unique_ptr<Boundary<dim>> make_boundary(const SceneReader& reader, const Node& node, const BoundaryContext<dim>& ctx);
+// The same for a loaded scene's boundary.
+template <int dim>
+std::unique_ptr<Boundary<dim>> make_boundary(const Scene& scene, const BoundarySpec& spec, const BoundaryContext<dim>& ctx);
 
 }  // namespace cdmpm

@@ -1,7 +1,7 @@
 // particles.h - material points stored as a structure of arrays, solids first.
 //
 // Each field is its own contiguous array so a phase of the step streams only what it needs. Every particle
-// carries its mass m, position x, velocity v, APIC affine matrix C (the particle's velocity gradient
+// carries a 64-bit id (unique in the run, kept through reordering, checkpoints and frames), its mass m, position x, velocity v, APIC affine matrix C (the particle's velocity gradient
 // estimate, Jiang et al. 2015), the total volume ratio J = V / V0 and its material index. The reference
 // (unstressed) volume is not stored: it is V0 = m / rho0 of the particle's material (material/material.h,
 // reference_volume), exactly how seeding sets the mass.
@@ -34,6 +34,7 @@ using MaterialId = uint8_t;
 template <int dim>
 struct Particles {
   // Every particle.
+  std::vector<uint64_t> id;
   std::vector<Vec<dim>> x, v;
   std::vector<Mat<dim>> C;
   std::vector<Real> mass, J;
@@ -44,6 +45,29 @@ struct Particles {
 
   size_t size() const { return x.size(); }
   size_t solid_count() const { return F.size(); }
+  uint64_t next_id = 0;  // id of the next particle added
+
+  // Copies of the particles listed in `indices` (ascending), solids first as always: the batch a process sends
+  // away when particles migrate (docs/architecture.md).
+  Particles extract(const std::vector<uint32_t>& indices) const {
+    Particles out;
+    for (const uint32_t q : indices) {
+      const bool solid = q < solid_count();
+      if (solid) out.add_solid(x[q], v[q], mass[q], J[q], material[q], C[q], F[q], alpha[q]);
+      else out.add_fluid(x[q], v[q], mass[q], J[q], material[q], C[q]);
+      out.id[solid ? out.solid_count() - 1 : out.size() - 1] = id[q];
+    }
+    return out;
+  }
+  // Adds a batch (from extract), keeping its ids: its solids after this set's solids, its fluids at the end.
+  void append(const Particles& batch) {
+    for (size_t q = 0; q < batch.size(); ++q) {
+      if (q < batch.solid_count()) add_solid(batch.x[q], batch.v[q], batch.mass[q], batch.J[q], batch.material[q], batch.C[q],
+                                             batch.F[q], batch.alpha[q]);
+      else add_fluid(batch.x[q], batch.v[q], batch.mass[q], batch.J[q], batch.material[q], batch.C[q]);
+      id[q < batch.solid_count() ? solid_count() - 1 : size() - 1] = batch.id[q];
+    }
+  }
 
   // Appends a fluid particle.
   void add_fluid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, MaterialId mat,
@@ -64,7 +88,7 @@ struct Particles {
   // reorder, save and load them generically).
   template <class Fn>
   void for_each_array(Fn&& fn) {
-    fn(x); fn(v); fn(C); fn(mass); fn(J); fn(material);
+    fn(id); fn(x); fn(v); fn(C); fn(mass); fn(J); fn(material);
   }
   template <class Fn>
   void for_each_solid_array(Fn&& fn) {
@@ -73,7 +97,7 @@ struct Particles {
 
   // Reorders the particles so that new particle k is old particle order[k], except that the solids are moved
   // (keeping their relative order) in front of the fluids, so any order keeps the solids-first layout.
-  // `order` may list a subset: the particles it leaves out are removed (sinks, sim/simulation.cpp).
+  // `order` may list a subset: the particles it leaves out are removed (sinks, sim/sinks.h).
   //
   // A full permutation is applied in place along its cycles, every array by its own thread, so the
   // reordering holds no copy of any field: it needs the permutation (4 B per particle; a second copy only
@@ -159,6 +183,7 @@ struct Particles {
 
   void insert_common(size_t k, const Vec<dim>& xp, const Vec<dim>& vp, const Mat<dim>& Cp, Real m, Real Jp,
                      MaterialId mat) {
+    id.insert(id.begin() + k, next_id++);
     x.insert(x.begin() + k, xp);
     v.insert(v.begin() + k, vp);
     C.insert(C.begin() + k, Cp);

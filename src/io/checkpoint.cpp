@@ -9,7 +9,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '5'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '6'};
 
 struct Writer {
   std::ofstream& os;
@@ -57,7 +57,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod<uint64_t>(p.size());
     w.pod<uint64_t>(p.solid_count());
     w.pod(m.time); w.pod(m.steps); w.pod(m.frame_index); w.pod(m.probe_index); w.pod(m.wave_dt_at_start);
-    w.vec(m.still_levels);
+    w.vec(m.probe_state);
     w.pod<uint64_t>(m.frames.size());
     for (const auto& [t, f] : m.frames) { w.pod(t); w.str(f); }
     w.pod(m.probes_csv_bytes);
@@ -81,7 +81,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   if (magic[7] != kMagic[7])
     throw std::runtime_error(path + ": checkpoint format CDMPMCK" + std::string(1, magic[7]) +
                              " was written by another cdmpm version (this one reads CDMPMCK" + std::string(1, kMagic[7]) +
-                             ", which adds the rigid bodies' state); rerun the scene without --resume");
+                             ", which adds the particle ids); rerun the scene without --resume");
   int32_t d = 0, real = 0;
   uint64_t n = 0, ns = 0;
   r.pod(d); r.pod(real); r.pod(n); r.pod(ns);
@@ -91,7 +91,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   if (ns > n) throw std::runtime_error(path + ": checkpoint is corrupt (more solid particles than particles)");
   CheckpointMeta m;
   r.pod(m.time); r.pod(m.steps); r.pod(m.frame_index); r.pod(m.probe_index); r.pod(m.wave_dt_at_start);
-  r.vec(m.still_levels);
+  r.vec(m.probe_state);
   uint64_t nf = 0;
   r.pod(nf);
   m.frames.resize(nf);

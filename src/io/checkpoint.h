@@ -1,11 +1,10 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
 //
-// Layout (format CDMPMCK5): magic "CDMPMCK5", dim, sizeof(Real), particle count, solid particle count,
-// the run metadata (with the rigid bodies' state, sim/rigid_bodies.h), then every per-particle array raw
-// (Particles::for_each_array order), then the solid-only arrays F and alpha (Particles::for_each_solid_array
-// order; the solids are particles 0 .. solid count - 1). Older formats (CDMPMCK2: F and alpha for every
-// particle; CDMPMCK3: no rigid bodies; CDMPMCK4: the reference volume and a 4-byte material id) are refused
-// with a message saying so. Written to a temporary file
+// Layout (format CDMPMCK6): magic "CDMPMCK6", dim, sizeof(Real), particle count, solid particle count,
+// the run metadata (with the probes' own states and the rigid bodies' state), then every per-particle array raw
+// (Particles::for_each_array order, the 64-bit particle ids first), then the solid-only arrays F and alpha
+// (Particles::for_each_solid_array order; the solids are particles 0 .. solid count - 1). A checkpoint of
+// another format (an older cdmpm: CDMPMCK5 had no particle ids) is refused with a message saying so. Written to a temporary file
 // and renamed, so the previous checkpoint stays valid until the new one is complete. A resumed run
 // continues bit for bit: the grid, particle bins and speeds are all recomputed from the particle state.
 #pragma once
@@ -25,7 +24,7 @@ struct CheckpointMeta {
   long long frame_index = 0;   // index of the last frame written
   long long probe_index = 0;   // index of the last probe sample written
   double wave_dt_at_start = 0;
-  std::vector<double> still_levels;
+  std::vector<double> probe_state;                      // Probes::save_state() (each probe saves its own)
   std::vector<std::pair<double, std::string>> frames;  // (time, file) written so far, for particles.pvd
   uint64_t probes_csv_bytes = 0;                        // size of probes.csv at the checkpoint
   uint64_t icebergs_csv_bytes = 0;                      // size of icebergs.csv at the checkpoint

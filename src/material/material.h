@@ -1,53 +1,48 @@
-// material.h - the material table: one constitutive model per named scene material.
+// material.h - the material registry and table: one constitutive model per named scene material.
 //
-// Each particle stores an index into this table. The constitutive update (after grid-to-particle) and the
-// stress evaluation (in particle-to-grid) dispatch on Material::kind:
-//   Water: weakly compressible fluid (material/weakly_compressible_water.h), state J;
-//   Ice:   split Neo-Hookean elasticity (material/neo_hookean_split.h) with cohesive Cam-Clay plasticity
-//          and softening (material/cohesive_cam_clay.h), state: elastic F and hardening variable alpha
-//          (stored for ice particles only, core/particles.h);
-//   Rigid: a particle of a rigid body (sim/rigid_bodies.h): after each grid-to-particle transfer its velocity is
-//          projected onto its body's rigid motion. It carries the pressure of the Tait equation of state
-//          (`water`, with the body's density and bulk modulus, no viscosity) of a volume ratio J that follows the
-//          divergence of the grid velocity at the particle: the pressure that keeps other materials from
-//          flowing into the body (without it the body, having no stress, would let water seep through it).
-//          Stored with the fluids (no F or alpha).
+// The models (one file each, material/material_model.h says what each provides) are the alternatives of
+// MaterialModel, a std::variant: dispatch in the hot loops is static (a switch on the variant's index, no
+// virtual call), and a material of an unknown type cannot exist past the loader, which only builds the
+// alternatives listed here. Adding a model: its file, and one entry in the variant below (and its keys in
+// docs/scenes.md). Each particle stores an index into the scene's table of Materials (core/particles.h).
 #pragma once
 
 #include <string>
+#include <variant>
 
-#include "material/cohesive_cam_clay.h"
-#include "material/neo_hookean_split.h"
-#include "material/weakly_compressible_water.h"
+#include "material/ice.h"
+#include "material/material_model.h"
+#include "material/rigid.h"
+#include "material/water.h"
 
 namespace cdmpm {
 
-enum class MaterialKind { Water, Ice, Rigid };
+// The registry: every constitutive model the scene "type" key may name.
+using MaterialModel = std::variant<Water, Ice, Rigid>;
 
-struct IceModel {
-  NeoHookeanSplit elastic;
-  CohesiveCamClay plastic;
-  bool plasticity = true;   // false: purely elastic (no return mapping)
-  Real p0_initial = 0;      // pre-consolidation pressure of intact ice [Pa]
-  Real alpha_initial = 0;   // alpha giving p0_initial
-
-  Real p0(Real alpha) const { return plastic.p0_of_alpha(alpha, elastic.kappa); }
-  // Damage d = 1 - p0 / p0_initial in [0, 1]: 0 intact, 1 all cohesion lost (material/cohesive_cam_clay.h).
-  Real damage(Real alpha) const { return plasticity ? CohesiveCamClay::damage(p0(alpha), p0_initial) : Real(0); }
-};
+template <class... M>
+constexpr bool all_models(std::variant<M...>*) { return (ConstitutiveModel<M> && ...); }
+static_assert(all_models(static_cast<MaterialModel*>(nullptr)), "every registered material model is a ConstitutiveModel");
 
 struct Material {
   std::string name;
-  MaterialKind kind = MaterialKind::Water;
-  Real density = 1000;
-  WeaklyCompressibleWater water;
-  IceModel ice;
-  Real half_spacing = 0;  // half the particle spacing of this material's bodies (for surface probes)
+  MaterialModel model;
+  Real half_spacing = 0;  // half the particle spacing of this material's bodies (set by seeding; surface probes)
+
+  // f(model) with the model's concrete type.
+  template <class F>
+  decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), model); }
+  const MaterialTraits& traits() const {
+    return visit([](const auto& m) -> const MaterialTraits& { return std::decay_t<decltype(m)>::traits; });
+  }
+  std::string_view type() const { return visit([](const auto& m) { return std::decay_t<decltype(m)>::type; }); }
+  Real density() const { return visit([](const auto& m) { return m.density(); }); }
 };
 
-inline bool is_fluid(const Material& m) { return m.kind == MaterialKind::Water; }
+// Reads the material `name` from its scene object (its "type" names a registered model, which reads the rest).
+Material parse_material(const SceneReader& reader, const Node& node, const std::string& name);
 
 // Reference (unstressed) volume V0 = m / rho0 of a particle of mass m (seeding sets m = rho0 V0).
-inline Real reference_volume(const Material& m, Real mass) { return mass / m.density; }
+inline Real reference_volume(const Material& m, Real mass) { return mass / m.density(); }
 
 }  // namespace cdmpm

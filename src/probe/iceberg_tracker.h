@@ -17,6 +17,7 @@
 #include <ostream>
 #include <vector>
 
+#include "material/stress.h"
 #include "probe/icebergs.h"
 #include "sim/simulation.h"
 
@@ -29,11 +30,11 @@ class IcebergTracker {
     const Scene& s = sim.scene;
     int ppc = 0;
     for (const BodySpec& b : s.bodies)
-      if (sim.materials[b.material_index].kind == MaterialKind::Ice) ppc = std::max(ppc, b.particles_per_cell);
+      if (sim.materials[b.material_index].traits().breakable) ppc = std::max(ppc, b.particles_per_cell);
     active_ = ppc > 0;
     min_particles_ = static_cast<size_t>(s.output.min_iceberg_cells) * static_cast<size_t>(ppc);
     for (const Material& m : sim.materials)
-      if (m.kind == MaterialKind::Ice) spacing_ = std::max(spacing_, Real(2) * m.half_spacing);
+      if (m.traits().breakable) spacing_ = std::max(spacing_, Real(2) * m.half_spacing);
   }
 
   bool active() const { return active_; }
@@ -46,9 +47,9 @@ class IcebergTracker {
 #pragma omp parallel for schedule(static)
     for (size_t q = 0; q < n; ++q) {
       const Material& m = sim_.materials[P.material[q]];
-      is_ice[q] = m.kind == MaterialKind::Ice;
+      is_ice[q] = m.traits().breakable;
       volume[q] = reference_volume(sim_.materials[P.material[q]], P.mass[q]) * P.J[q];
-      damage[q] = is_ice[q] ? m.ice.damage(P.alpha[q]) : Real(0);
+      damage[q] = particle_damage(m, P, q);
     }
     const OutputSpec& o = sim_.scene.output;
     return find_ice_bodies<dim>(P.x, volume, damage, is_ice, sim_.grid.dx, spacing_, o.flow_axis,
@@ -62,7 +63,7 @@ class IcebergTracker {
     const auto bodies = detect();
     if (bodies.size() < 2) return false;
     const IceBody<dim>& b = bodies[1];
-    first_ = {sim_.time, b.length, b.height, b.volume, static_cast<double>(b.particles)};
+    first_ = {sim_.time(), b.length, b.height, b.volume, static_cast<double>(b.particles)};
     for (int a = 0; a < dim; ++a) first_.push_back(b.centroid[a]);
     write_rows(csv, frame, bodies);
     return true;
@@ -79,7 +80,7 @@ class IcebergTracker {
 
   void write_rows(std::ostream& csv, long long frame, const std::vector<IceBody<dim>>& bodies) const {
     for (const IceBody<dim>& b : bodies) {
-      csv << frame << ',' << sim_.time << ',' << b.id << ',' << b.particles << ',' << b.volume << ',' << b.length
+      csv << frame << ',' << sim_.time() << ',' << b.id << ',' << b.particles << ',' << b.volume << ',' << b.length
           << ',' << b.height;
       for (int a = 0; a < dim; ++a) csv << ',' << b.centroid[a];
       csv << '\n';

@@ -58,6 +58,189 @@ inline int64_t ice_cell_coord(Real x, Real dx) { return static_cast<int64_t>(std
 //  Returns bodies sorted by volume, largest first, ids 0,1,2...; fills `label` (if non-null) with each
 //  particle's body id or -1. Throws std::invalid_argument on mismatched sizes, dx <= 0, a bad flow_axis or
 //  a non-finite ice position.
+// The steps of find_ice_bodies, one method each, on the state they share.
+template <int dim>
+class IceBodyFinder {
+ public:
+  using Cell = Eigen::Matrix<int64_t, dim, 1>;
+  using DVec = Eigen::Matrix<double, dim, 1>;
+
+  IceBodyFinder(const std::vector<Vec<dim>>& x, const std::vector<Real>& volume, const std::vector<Real>& damage,
+                const std::vector<uint8_t>& is_ice, Real dx, Real damage_threshold)
+      : x_(x), volume_(volume), damage_(damage), is_ice_(is_ice), dx_(dx), threshold_(damage_threshold), n_(x.size()) {}
+
+  // 1. Cell of every ice particle (parallel, order-free) and the bounding box of those cells; false if no ice.
+  bool bin_cells() {
+    cell_.resize(n_);
+    cmin_ = Cell::Constant(std::numeric_limits<int64_t>::max());
+    cmax_ = Cell::Constant(std::numeric_limits<int64_t>::min());
+    bool finite = true;
+#pragma omp parallel
+    {
+      Cell tmin = cmin_, tmax = cmax_;
+      bool tfinite = true;
+#pragma omp for schedule(static)
+      for (size_t p = 0; p < n_; ++p) {
+        if (!is_ice_[p]) continue;
+        if (!x_[p].allFinite()) {
+          tfinite = false;
+          continue;
+        }
+        for (int a = 0; a < dim; ++a) cell_[p][a] = ice_cell_coord(x_[p][a], dx_);
+        tmin = tmin.cwiseMin(cell_[p]);
+        tmax = tmax.cwiseMax(cell_[p]);
+      }
+#pragma omp critical(cdmpm_icebergs_bbox)
+      {
+        cmin_ = cmin_.cwiseMin(tmin);
+        cmax_ = cmax_.cwiseMax(tmax);
+        finite = finite && tfinite;
+      }
+    }
+    if (!finite) throw std::invalid_argument("find_ice_bodies: non-finite ice particle position");
+    return cmin_[0] <= cmax_[0];
+  }
+
+  // 2. Dense slot array over the box (last axis fastest): cell -> occupied-cell number, or -1; each occupied
+  // cell numbered by its first particle, intact if its mean damage is below the threshold.
+  void occupy() {
+    extent_ = cmax_ - cmin_ + Cell::Ones();
+    size_t box = 1;
+    for (int a = dim - 1; a >= 0; --a) {
+      stride_[a] = static_cast<int64_t>(box);
+      if (static_cast<double>(box) * static_cast<double>(extent_[a]) > double(std::numeric_limits<int32_t>::max()))
+        throw std::invalid_argument("find_ice_bodies: the ice spans more than 2^31 cells of size dx");
+      box *= static_cast<size_t>(extent_[a]);
+    }
+    slot_.assign(box, -1);
+    std::vector<double> damage_sum;
+    std::vector<size_t> count;
+    for (size_t p = 0; p < n_; ++p) {
+      if (!is_ice_[p]) continue;
+      const size_t c = linear(cell_[p]);
+      if (slot_[c] < 0) {
+        slot_[c] = static_cast<int32_t>(occupied_.size());
+        occupied_.push_back(c);
+        damage_sum.push_back(0);
+        count.push_back(0);
+      }
+      damage_sum[slot_[c]] += damage_[p];
+      ++count[slot_[c]];
+    }
+    intact_.resize(occupied_.size());
+    for (size_t o = 0; o < occupied_.size(); ++o) intact_[o] = damage_sum[o] / double(count[o]) < double(threshold_);
+  }
+
+  // 3. Union-find over intact cells through faces; the root is always the lowest occupied-cell number.
+  void unite() {
+    const size_t m = occupied_.size();
+    parent_.resize(m);
+    std::iota(parent_.begin(), parent_.end(), 0);
+    for (size_t o = 0; o < m; ++o) {
+      if (!intact_[o]) continue;
+      size_t rest = occupied_[o];
+      for (int a = 0; a < dim; ++a) {
+        const int64_t coord = static_cast<int64_t>(rest) / stride_[a];
+        rest -= static_cast<size_t>(coord * stride_[a]);
+        if (coord + 1 >= extent_[a]) continue;
+        const int32_t nb = slot_[occupied_[o] + static_cast<size_t>(stride_[a])];
+        if (nb < 0 || !intact_[nb]) continue;
+        const int32_t r1 = find(static_cast<int32_t>(o)), r2 = find(nb);
+        if (r1 != r2) parent_[std::max(r1, r2)] = std::min(r1, r2);
+      }
+    }
+  }
+
+  // 4. Per-component sums over the particles that belong, in particle index order.
+  void accumulate() {
+    std::vector<int32_t> comp_of_root(occupied_.size(), -1);
+    comp_.assign(n_, -1);
+    for (size_t p = 0; p < n_; ++p) {
+      if (!is_ice_[p] || !(damage_[p] < threshold_)) continue;
+      const int32_t o = slot_[linear(cell_[p])];
+      if (!intact_[o]) continue;
+      const int32_t r = find(o);
+      const DVec xp = x_[p].template cast<double>();
+      if (comp_of_root[r] < 0) {
+        comp_of_root[r] = static_cast<int32_t>(acc_.size());
+        acc_.push_back({0, p, 0, DVec::Zero(), DVec::Zero(), xp, xp});
+      }
+      Acc& a = acc_[comp_of_root[r]];
+      comp_[p] = comp_of_root[r];
+      ++a.particles;
+      a.volume += double(volume_[p]);
+      a.moment += double(volume_[p]) * xp;
+      a.sum += xp;
+      a.lo = a.lo.cwiseMin(xp);
+      a.hi = a.hi.cwiseMax(xp);
+    }
+  }
+
+  // 5. Drop debris, sort (volume down, then centroid along flow_axis, then first particle), number; relabel.
+  std::vector<IceBody<dim>> bodies(Real spacing, int flow_axis, size_t min_particles, std::vector<int>* label) const {
+    std::vector<int32_t> keep;
+    for (size_t k = 0; k < acc_.size(); ++k)
+      if (acc_[k].particles >= min_particles) keep.push_back(static_cast<int32_t>(k));
+    std::vector<IceBody<dim>> bodies;
+    for (int32_t k : keep) bodies.push_back(body(acc_[k], spacing, flow_axis));
+    std::vector<size_t> order(bodies.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
+      if (bodies[i].volume != bodies[j].volume) return bodies[i].volume > bodies[j].volume;
+      if (bodies[i].centroid[flow_axis] != bodies[j].centroid[flow_axis])
+        return bodies[i].centroid[flow_axis] < bodies[j].centroid[flow_axis];
+      return acc_[keep[i]].first < acc_[keep[j]].first;
+    });
+    std::vector<IceBody<dim>> sorted;
+    std::vector<int> id_of_comp(acc_.size(), -1);
+    for (size_t r = 0; r < order.size(); ++r) {
+      sorted.push_back(bodies[order[r]]);
+      sorted.back().id = static_cast<int>(r);
+      id_of_comp[keep[order[r]]] = static_cast<int>(r);
+    }
+    if (label)
+      for (size_t p = 0; p < n_; ++p)
+        if (comp_[p] >= 0) (*label)[p] = id_of_comp[comp_[p]];
+    return sorted;
+  }
+
+ private:
+  struct Acc {
+    size_t particles = 0, first = 0;
+    double volume = 0;
+    DVec moment, sum, lo, hi;
+  };
+  static IceBody<dim> body(const Acc& a, Real spacing, int flow_axis) {
+    IceBody<dim> b;
+    b.particles = a.particles;
+    b.volume = static_cast<Real>(a.volume);
+    b.centroid = (a.volume > 0 ? DVec(a.moment / a.volume) : DVec(a.sum / double(a.particles))).template cast<Real>();
+    b.lo = a.lo.template cast<Real>();
+    b.hi = a.hi.template cast<Real>();
+    b.length = static_cast<Real>(a.hi[flow_axis] - a.lo[flow_axis] + double(spacing));
+    b.height = static_cast<Real>(a.hi[vertical_axis<dim>] - a.lo[vertical_axis<dim>] + double(spacing));
+    return b;
+  }
+  size_t linear(const Cell& c) const { return static_cast<size_t>((c - cmin_).dot(stride_)); }
+  int32_t find(int32_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+
+  const std::vector<Vec<dim>>& x_;
+  const std::vector<Real>& volume_;
+  const std::vector<Real>& damage_;
+  const std::vector<uint8_t>& is_ice_;
+  Real dx_, threshold_;
+  size_t n_;
+  std::vector<Cell> cell_;
+  Cell cmin_, cmax_, extent_, stride_;
+  std::vector<int32_t> slot_, parent_, comp_;
+  std::vector<size_t> occupied_;  // linear cell index of each occupied cell, by first particle
+  std::vector<uint8_t> intact_;
+  std::vector<Acc> acc_;
+};
+
 template <int dim>
 std::vector<IceBody<dim>> find_ice_bodies(const std::vector<Vec<dim>>& x, const std::vector<Real>& volume,
                                           const std::vector<Real>& damage, const std::vector<uint8_t>& is_ice,
@@ -69,162 +252,12 @@ std::vector<IceBody<dim>> find_ice_bodies(const std::vector<Vec<dim>>& x, const 
   if (!(dx > 0)) throw std::invalid_argument("find_ice_bodies: dx must be positive");
   if (flow_axis < 0 || flow_axis >= dim) throw std::invalid_argument("find_ice_bodies: flow_axis out of range");
   if (label) label->assign(n, -1);
-
-  // 1. Cell of every ice particle (parallel, order-free) and the bounding box of those cells.
-  using Cell = Eigen::Matrix<int64_t, dim, 1>;
-  std::vector<Cell> cell(n);
-  Cell cmin = Cell::Constant(std::numeric_limits<int64_t>::max());
-  Cell cmax = Cell::Constant(std::numeric_limits<int64_t>::min());
-  bool finite = true;
-#pragma omp parallel
-  {
-    Cell tmin = cmin, tmax = cmax;
-    bool tfinite = true;
-#pragma omp for schedule(static)
-    for (size_t p = 0; p < n; ++p) {
-      if (!is_ice[p]) continue;
-      if (!x[p].allFinite()) {
-        tfinite = false;
-        continue;
-      }
-      for (int a = 0; a < dim; ++a) cell[p][a] = ice_cell_coord(x[p][a], dx);
-      tmin = tmin.cwiseMin(cell[p]);
-      tmax = tmax.cwiseMax(cell[p]);
-    }
-#pragma omp critical(cdmpm_icebergs_bbox)
-    {
-      cmin = cmin.cwiseMin(tmin);
-      cmax = cmax.cwiseMax(tmax);
-      finite = finite && tfinite;
-    }
-  }
-  if (!finite) throw std::invalid_argument("find_ice_bodies: non-finite ice particle position");
-  if (cmin[0] > cmax[0]) return {};  // no ice
-
-  // 2. Dense slot array over the box (last axis fastest): cell -> occupied-cell number, or -1.
-  Cell extent = cmax - cmin + Cell::Ones(), stride;
-  size_t box = 1;
-  for (int a = dim - 1; a >= 0; --a) {
-    stride[a] = static_cast<int64_t>(box);
-    if (static_cast<double>(box) * static_cast<double>(extent[a]) > double(std::numeric_limits<int32_t>::max()))
-      throw std::invalid_argument("find_ice_bodies: the ice spans more than 2^31 cells of size dx");
-    box *= static_cast<size_t>(extent[a]);
-  }
-  const auto linear = [&](const Cell& c) { return static_cast<size_t>((c - cmin).dot(stride)); };
-  std::vector<int32_t> slot(box, -1);
-  std::vector<size_t> occupied;  // linear cell index of each occupied cell, by first particle
-  std::vector<double> damage_sum;
-  std::vector<size_t> count;
-  for (size_t p = 0; p < n; ++p) {
-    if (!is_ice[p]) continue;
-    const size_t c = linear(cell[p]);
-    if (slot[c] < 0) {
-      slot[c] = static_cast<int32_t>(occupied.size());
-      occupied.push_back(c);
-      damage_sum.push_back(0);
-      count.push_back(0);
-    }
-    damage_sum[slot[c]] += damage[p];
-    ++count[slot[c]];
-  }
-  const size_t m = occupied.size();
-  std::vector<uint8_t> intact(m);
-  for (size_t o = 0; o < m; ++o) intact[o] = damage_sum[o] / double(count[o]) < double(damage_threshold);
-
-  // 3. Union-find over intact cells through faces; the root is always the lowest occupied-cell number.
-  std::vector<int32_t> parent(m);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto find = [&](int32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (size_t o = 0; o < m; ++o) {
-    if (!intact[o]) continue;
-    size_t rest = occupied[o];
-    for (int a = 0; a < dim; ++a) {
-      const int64_t coord = static_cast<int64_t>(rest) / stride[a];
-      rest -= static_cast<size_t>(coord * stride[a]);
-      if (coord + 1 >= extent[a]) continue;
-      const int32_t nb = slot[occupied[o] + static_cast<size_t>(stride[a])];
-      if (nb < 0 || !intact[nb]) continue;
-      const int32_t r1 = find(static_cast<int32_t>(o)), r2 = find(nb);
-      if (r1 != r2) parent[std::max(r1, r2)] = std::min(r1, r2);
-    }
-  }
-
-  // 4. Per-component sums over the particles that belong, in particle index order.
-  struct Acc {
-    size_t particles = 0, first = 0;
-    double volume = 0;
-    Eigen::Matrix<double, dim, 1> moment, sum, lo, hi;
-  };
-  std::vector<int32_t> comp_of_root(m, -1);
-  std::vector<Acc> acc;
-  std::vector<int32_t> comp(n, -1);
-  for (size_t p = 0; p < n; ++p) {
-    if (!is_ice[p] || !(damage[p] < damage_threshold)) continue;
-    const int32_t o = slot[linear(cell[p])];
-    if (!intact[o]) continue;
-    const int32_t r = find(o);
-    const Eigen::Matrix<double, dim, 1> xp = x[p].template cast<double>();
-    if (comp_of_root[r] < 0) {
-      comp_of_root[r] = static_cast<int32_t>(acc.size());
-      Acc a;
-      a.first = p;
-      a.moment = a.sum = Eigen::Matrix<double, dim, 1>::Zero();
-      a.lo = a.hi = xp;
-      acc.push_back(a);
-    }
-    Acc& a = acc[comp_of_root[r]];
-    comp[p] = comp_of_root[r];
-    ++a.particles;
-    a.volume += double(volume[p]);
-    a.moment += double(volume[p]) * xp;
-    a.sum += xp;
-    a.lo = a.lo.cwiseMin(xp);
-    a.hi = a.hi.cwiseMax(xp);
-  }
-
-  // 5. Drop debris, sort, number; relabel particles.
-  std::vector<int32_t> keep;
-  for (size_t k = 0; k < acc.size(); ++k)
-    if (acc[k].particles >= min_particles) keep.push_back(static_cast<int32_t>(k));
-  std::vector<IceBody<dim>> bodies;
-  bodies.reserve(keep.size());
-  for (int32_t k : keep) {
-    const Acc& a = acc[k];
-    IceBody<dim> b;
-    b.particles = a.particles;
-    b.volume = static_cast<Real>(a.volume);
-    b.centroid = (a.volume > 0 ? Eigen::Matrix<double, dim, 1>(a.moment / a.volume)
-                               : Eigen::Matrix<double, dim, 1>(a.sum / double(a.particles)))
-                     .template cast<Real>();
-    b.lo = a.lo.template cast<Real>();
-    b.hi = a.hi.template cast<Real>();
-    b.length = static_cast<Real>(a.hi[flow_axis] - a.lo[flow_axis] + double(spacing));
-    b.height = static_cast<Real>(a.hi[vertical_axis<dim>] - a.lo[vertical_axis<dim>] + double(spacing));
-    bodies.push_back(b);
-  }
-  std::vector<size_t> order(bodies.size());
-  std::iota(order.begin(), order.end(), size_t(0));
-  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
-    if (bodies[i].volume != bodies[j].volume) return bodies[i].volume > bodies[j].volume;
-    if (bodies[i].centroid[flow_axis] != bodies[j].centroid[flow_axis])
-      return bodies[i].centroid[flow_axis] < bodies[j].centroid[flow_axis];
-    return acc[keep[i]].first < acc[keep[j]].first;
-  });
-  std::vector<IceBody<dim>> sorted;
-  sorted.reserve(bodies.size());
-  std::vector<int> id_of_comp(acc.size(), -1);
-  for (size_t r = 0; r < order.size(); ++r) {
-    sorted.push_back(bodies[order[r]]);
-    sorted.back().id = static_cast<int>(r);
-    id_of_comp[keep[order[r]]] = static_cast<int>(r);
-  }
-  if (label)
-    for (size_t p = 0; p < n; ++p)
-      if (comp[p] >= 0) (*label)[p] = id_of_comp[comp[p]];
-  return sorted;
+  IceBodyFinder<dim> finder(x, volume, damage, is_ice, dx, damage_threshold);
+  if (!finder.bin_cells()) return {};  // no ice
+  finder.occupy();
+  finder.unite();
+  finder.accumulate();
+  return finder.bodies(spacing, flow_axis, min_particles, label);
 }
 
 }  // namespace cdmpm

@@ -27,7 +27,7 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
     std::optional<Crest> crest;
   };
   std::vector<Row> rows;
-  for (const ProbeSpec* g : gauges) rows.push_back({g->name, g->position[0], first_crest(t, probes.numbers(g->name))});
+  for (const ProbeSpec* g : gauges) rows.push_back({g->name, g->json.at("position").at(0).get<double>(), first_crest(t, probes.numbers(g->name))});
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.x < b.x; });
 
   std::ofstream csv(waves_csv, std::ios::trunc);

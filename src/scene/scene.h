@@ -1,7 +1,8 @@
 // scene.h - the validated description of a simulation, as read from a JSON scene file.
 //
 // Everything here is in SI units. The loader (scene_loader.h) fills and validates these structs; the
-// engine never sees raw JSON. Vectors have exactly `dim` entries once loaded. See docs/scenes.md for the
+// engine never sees raw JSON, except the objects of boundaries and probes, which it builds through their
+// registries from the objects the loader checked. Vectors have exactly `dim` entries once loaded. See docs/scenes.md for the
 // meaning of each key and its default.
 #pragma once
 
@@ -11,6 +12,9 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "material/material.h"
+#include "shape/shape.h"
 
 namespace cdmpm {
 
@@ -29,38 +33,11 @@ struct TimeSpec {
   double max_dt = 0;          // optional upper bound on dt [s]; 0 = none
 };
 
-struct MaterialSpec {
-  std::string name;
-  std::string type;  // "water", "ice" or "rigid" (a rigid body's material: density and the water keys but viscosity)
-  double density = 0;  // reference density rho0 [kg/m^3]
-  // water: Tait equation of state p = K/gamma ((rho/rho0)^gamma - 1), optional dynamic viscosity
-  double bulk_modulus = 0;  // K [Pa]
-  double gamma = 7;         // Tait exponent
-  double viscosity = 0;     // dynamic viscosity mu [Pa s]
-  // ice: split Neo-Hookean elasticity + cohesive Cam-Clay plasticity (docs/ice.md)
-  double youngs_modulus = 0;   // E [Pa]
-  double poissons_ratio = 0.3; // nu
-  double M = 0;                // critical-state slope (from "M" or "friction_angle")
-  double beta = 0;             // cohesion: hydrostatic tensile strength / p0
-  double xi = 0;               // softening/hardening rate of p0(alpha)
-  double p0 = 0;               // initial pre-consolidation pressure [Pa] (from "p0", "alpha0" or "tensile_strength")
-  bool hardening = true;       // evolve p0 with the hardening variable alpha
-  bool plastic = true;         // false: purely elastic ice
-};
-
-struct ShapeSpec {
-  std::string type;  // "box", "ball", "polygon" (2D only)
-  std::vector<double> min, max;                  // box
-  std::vector<double> center;                    // ball
-  double radius = 0;                             // ball
-  std::vector<std::array<double, 2>> vertices;   // polygon, counter-clockwise or clockwise
-};
-
 struct BodySpec {
   std::string material;            // name of a material in `materials`
   int material_index = -1;         // resolved index into Scene::materials
-  ShapeSpec shape;
-  std::vector<ShapeSpec> holes;    // regions left empty inside the shape (crevasses, notches)
+  Shape shape;                     // shape/shape.h
+  std::vector<Shape> holes;        // regions left empty inside the shape (crevasses, notches)
   int particles_per_cell = 0;      // must be n^dim (n particles per axis per cell)
   std::vector<double> velocity;    // initial velocity, default zero
   // initial velocity gradient G (row-major dim x dim, default zero): v(x) = velocity + G (x - c), c the centre
@@ -75,23 +52,12 @@ struct BodySpec {
   double hold_until = 0;           // the body is held at rest until this time [s], then released
 };
 
+// A boundary (boundary/boundary.h) of a registered type: its scene object as checked by the loader, from which
+// the simulation builds it (each boundary type reads its own keys, boundary/*.cpp).
 struct BoundarySpec {
-  std::string type;  // "walls", "half_plane", "box", "bathymetry"
-  BoundaryCondition condition = BoundaryCondition::Separate;
-  double friction = 0;  // Coulomb friction coefficient (separate condition only)
-  // walls: which faces; each of "x-","x+","y-","y+","z-","z+"; default all faces
-  std::vector<std::string> faces;
-  // half_plane: solid where (x - point) . normal < 0; normal points into the fluid
-  std::vector<double> point, normal;
-  // box: solid inside [min, max] at t = 0, moving with `velocity` (rigid translation; default at rest),
-  // reached by a linear ramp from rest over `ramp_time` [s] (0 = from the start)
-  std::vector<double> min, max, velocity;
-  double ramp_time = 0;
-  // bathymetry 2D: polyline of (x, height) points with increasing x; solid below it
-  std::vector<std::array<double, 2>> points;
-  // bathymetry 3D: height field heights[j][i] at (origin[0] + i*spacing[0], origin[1] + j*spacing[1])
-  std::vector<double> origin, spacing;
-  std::vector<std::vector<double>> heights;
+  std::string type;       // "walls", "half_plane", "box", "bathymetry" (boundary/registry.cpp)
+  nlohmann::json json;    // the boundary's object in the resolved scene
+  std::string path;       // its path in the scene ("boundaries[1]"), for messages
 };
 
 // A sink (an outlet): particles of `material` (all materials if empty) whose position is inside the box
@@ -104,18 +70,13 @@ struct SinkSpec {
   int material_index = -1;  // resolved, -1 = all
 };
 
+// A probe (probe/probe.h) of a registered type: its scene object as checked by the loader, from which the run
+// builds it (each probe type reads its own keys, probe/*.cpp).
 struct ProbeSpec {
   std::string name;
-  // "wave_gauge", "front", "pressure", "kinetic_energy", "gravitational_energy", "elastic_energy",
-  // "total_energy", "mass", "rigid_position", "rigid_velocity", "rigid_angle" (of the rigid body made of
-  // `material`; position and velocity give dim columns <name>_x, <name>_y(, <name>_z))
-  std::string type;
-  std::vector<double> position;         // pressure: dim entries; wave_gauge: dim-1 horizontal entries
-  std::string material;                 // optional material filter (empty = all materials)
-  int material_index = -1;              // resolved, -1 = all
-  int axis = 0;                         // front: axis along which the extent is measured
-  int direction = 1;                    // front: +1 = furthest along +axis, -1 = along -axis
-  std::optional<double> still_level;    // wave_gauge: still-water level; default the level at t = 0
+  std::string type;       // probe/registry.cpp
+  nlohmann::json json;    // the probe's object in the resolved scene
+  std::string path;       // its path in the scene ("probes.list[0]")
 };
 
 struct OutputSpec {
@@ -136,7 +97,7 @@ struct Scene {
   DomainSpec domain;
   TimeSpec time;
   std::vector<double> gravity;  // default (0, -9.81) or (0, 0, -9.81)
-  std::vector<MaterialSpec> materials;
+  std::vector<Material> materials;  // material/material.h
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;
   std::vector<SinkSpec> sinks;

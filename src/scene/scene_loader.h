@@ -13,12 +13,9 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/scene_reader.h"
 
 namespace cdmpm {
-
-struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Reads `path`, applies `overrides` (each "key.path=value", see apply_override), validates and returns the
 // scene. Throws SceneError on any problem.

@@ -122,7 +122,7 @@ class RigidBodies {
     bodies.clear();
     body_of_.assign(materials.size(), -1);
     for (const BodySpec& b : scene.bodies) {
-      if (materials[b.material_index].kind != MaterialKind::Rigid) continue;
+      if (!materials[b.material_index].traits().rigid) continue;
       RigidBody<dim> body;
       body.material = b.material_index;
       body.hold_until = b.hold_until;

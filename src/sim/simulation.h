@@ -1,11 +1,13 @@
-// simulation.h - one MPM simulation: particles, grid, materials, boundaries, and the explicit step.
+// simulation.h - one MPM simulation: particles, grid, materials, boundaries, rigid bodies, the clock, and the
+// explicit step (symplectic Euler, Jiang et al. 2016 course notes, sec. 9).
 //
-// One step (symplectic Euler, Jiang et al. 2016 course notes, sec. 9), data flowing one way:
-//   particles --p2g--> grid --wall folding, grid_update + boundary conditions--> grid --g2p--> particles
-//   --rigid projection--> particles --constitutive_update, rigid motion--> particles --sinks--> particles
-// (rigid bodies: sim/rigid_bodies.h; sinks remove the particles inside them)
-// The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, viscous limit, max_dt), where c_max is
-// the largest wave speed of any material present (acoustic speed of water in its current state).
+// One step runs the named phases of sim/phases.h in order, data flowing one way:
+//   particles --bin, p2g--> grid --boundary_fold, grid_update, boundary_unfold--> grid --g2p--> particles
+//   --constitutive_update, rigid_projection, advect, sinks--> particles --reductions--> next time step
+// Each phase is a function in the file of its concept; the step below only sequences them and times each.
+// The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, wave_cfl * the materials' own limits
+// (viscosity), max_dt), where c_max is the largest wave speed of any material present. The simulation owns
+// its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output time).
 #pragma once
 
 #include <memory>
@@ -19,6 +21,7 @@
 #include "grid/particle_bins.h"
 #include "material/material.h"
 #include "scene/scene.h"
+#include "sim/phases.h"
 #include "sim/rigid_bodies.h"
 
 namespace cdmpm {
@@ -32,10 +35,16 @@ class Simulation {
   Real stable_dt() const;
   // Advances the state by dt.
   void step(Real dt);
+  // Advances the state by one step that ends exactly at time t (t > time).
+  void step_until(double t);
   // Checks the state after a step; returns a message saying where and why if it is unstable.
   std::optional<std::string> check_state() const;
-  // Recomputes derived quantities (speeds) after the particle state was replaced, e.g. from a checkpoint.
-  void refresh() { update_speeds(); }
+  // Sets the clock and the time-step reference of a run resumed from a checkpoint (whose particles were loaded
+  // into `particles`), and recomputes the speeds from the particle state.
+  void restore(double t, long long step_count, Real wave_dt_reference);
+  double time() const { return time_; }
+  long long steps() const { return steps_; }
+  const PhaseTimer& phase_timer() const { return timer_; }
 
   const Scene& scene;
   Particles<dim> particles;
@@ -44,8 +53,6 @@ class Simulation {
   std::vector<std::unique_ptr<Boundary<dim>>> boundaries;
   RigidBodies<dim> rigid;
   Vec<dim> gravity, domain_size;
-  double time = 0;
-  long long steps = 0;
   Real max_wave_speed = 0;   // over particles, updated each step
   Real max_speed = 0;        // max |v_p|, updated each step
   Real wave_dt_at_start = 0; // reference for detecting a collapsing time step
@@ -53,11 +60,22 @@ class Simulation {
   static constexpr int reorder_interval = 8;  // steps between reorderings of particle memory by block
 
  private:
-  Real viscous_dt_ = 0;
-  ParticleBins bins_;
-  void seed_body(const BodySpec& body);
-  void remove_sunk_particles();
+  void advance(Real dt);
+  // The phases (sim/phases.h).
+  void bin();
+  void boundary_fold();
+  void grid_update_phase(Real dt);
+  void boundary_unfold();
+  void rigid_projection(Real dt);
+  void advect_phase(Real dt);
   void update_speeds();
+
+  double time_ = 0;
+  long long steps_ = 0;
+  Real material_dt_ = 0;                 // smallest of the materials' own time-step limits
+  std::vector<uint8_t> rigid_material_;  // per material: its particles are moved by a rigid body
+  ParticleBins bins_;
+  PhaseTimer timer_;
 };
 
 }  // namespace cdmpm

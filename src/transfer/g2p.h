@@ -2,8 +2,8 @@
 //
 //   v_p = sum_i w_ip v_i,   C_p = D^-1 sum_i w_ip v_i (x_i - x_p)^T
 // (Jiang et al. 2015, eq. 9-10; D^-1 = 4/dx^2 for quadratic B-splines). C_p is both the APIC affine
-// matrix and the particle's velocity gradient used by the constitutive update. Positions are advected
-// after the constitutive update (material/constitutive_update.h). Particles are processed block by block:
+// matrix and the particle's velocity gradient used by the constitutive update (the next phase of the step,
+// material/constitutive_update.h). Particles are processed block by block:
 // a block's grid velocities are copied once into a dense patch and gathered from there (block_patch.h).
 #pragma once
 
@@ -17,14 +17,8 @@
 
 namespace cdmpm {
 
-// `after(q)` runs right after particle q's v and C are set (the step passes the constitutive update and
-// advection of q, done while q's state is in cache); by default nothing.
-struct NoParticleUpdate {
-  void operator()(size_t) const {}
-};
-
-template <int dim, class After = NoParticleUpdate>
-void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, After&& after = {}) {
+template <int dim>
+void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins) {
   const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
   const size_t nb = bins.bin_count();
 #pragma omp parallel for schedule(dynamic, 4)
@@ -42,7 +36,6 @@ void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, After&
       B -= v * s.fx.transpose();
       p.v[q] = v;
       p.C[q] = Dinv_dx * B;
-      after(q);
     }
   }
 }

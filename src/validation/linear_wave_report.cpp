@@ -39,6 +39,30 @@ void write_csv(const std::string& path, const std::vector<std::string>& columns,
   if (!file) throw std::runtime_error(path + ": cannot write");
 }
 
+nlohmann::json crest_time(const std::optional<Crest>& c) { return c ? nlohmann::json(c->time) : nlohmann::json(nullptr); }
+nlohmann::json crest_height(const std::optional<Crest>& c) { return c ? nlohmann::json(c->amplitude) : nlohmann::json(nullptr); }
+
+// Every gauge's simulated first crest beside the Cauchy-Poisson solution of the released box.
+nlohmann::json cauchy_poisson_rows(const std::vector<std::string>& names, const std::vector<double>& xs,
+                                   const std::vector<double>& t, const std::vector<std::optional<Crest>>& crests,
+                                   const LinearWaveOptions& options) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (size_t i = 0; i < names.size(); ++i) {
+    std::vector<double> eta =
+        cauchy_poisson_box(xs[i], t, options.box->height, options.box->half_width, options.gravity, options.depth);
+    if (options.wall_x) {
+      const auto image = cauchy_poisson_box(2 * *options.wall_x - xs[i], t, options.box->height,
+                                            options.box->half_width, options.gravity, options.depth);
+      for (size_t j = 0; j < eta.size(); ++j) eta[j] += image[j];
+    }
+    const auto lin = first_crest(t, eta);
+    rows.push_back(nlohmann::json{{"gauge", names[i]}, {"x", xs[i]}, {"arrival_time", crest_time(crests[i])},
+                                  {"amplitude", crest_height(crests[i])}, {"linear_arrival_time", crest_time(lin)},
+                                  {"linear_amplitude", crest_height(lin)}});
+  }
+  return rows;
+}
+
 }  // namespace
 
 nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOptions& options) {
@@ -75,8 +99,8 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
   }
 
   auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  auto time = [&](const std::optional<Crest>& c) { return c ? nlohmann::json(c->time) : nlohmann::json(nullptr); };
-  auto height = [&](const std::optional<Crest>& c) { return c ? nlohmann::json(c->amplitude) : nlohmann::json(nullptr); };
+  const auto time = crest_time;
+  const auto height = crest_height;
   nlohmann::json pairs = nlohmann::json::array();
   for (size_t i = 0; i + 1 < names.size(); ++i) {
     const std::vector<double>& up = records[i];
@@ -99,22 +123,7 @@ nlohmann::json linear_wave_report(const std::string& out_dir, const LinearWaveOp
   nlohmann::json report = {{"pairs", pairs}};
 
   // The released box: every gauge against the Cauchy-Poisson solution (with the end wall's image).
-  if (options.box) {
-    report["cauchy_poisson"] = nlohmann::json::array();
-    for (size_t i = 0; i < names.size(); ++i) {
-      std::vector<double> eta =
-          cauchy_poisson_box(xs[i], t, options.box->height, options.box->half_width, options.gravity, options.depth);
-      if (options.wall_x) {
-        const auto image = cauchy_poisson_box(2 * *options.wall_x - xs[i], t, options.box->height,
-                                              options.box->half_width, options.gravity, options.depth);
-        for (size_t j = 0; j < eta.size(); ++j) eta[j] += image[j];
-      }
-      const auto lin = first_crest(t, eta);
-      report["cauchy_poisson"].push_back(nlohmann::json{
-          {"gauge", names[i]}, {"x", xs[i]}, {"arrival_time", time(crests[i])}, {"amplitude", height(crests[i])},
-          {"linear_arrival_time", time(lin)}, {"linear_amplitude", height(lin)}});
-    }
-  }
+  if (options.box) report["cauchy_poisson"] = cauchy_poisson_rows(names, xs, t, crests, options);
   // Written once everything is computed, so an error leaves no half-written file.
   write_csv(out_dir + "/linear_waves.csv",
             {"from", "to", "x_from", "x_to", "arrival_from", "arrival_to", "linear_arrival_to", "amplitude_to",

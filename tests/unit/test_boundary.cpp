@@ -15,19 +15,20 @@
 namespace cdmpm {
 namespace {
 
-BoundarySpec box(BoundaryCondition c, std::vector<double> velocity = {0, 0}, double ramp = 0) {
-  BoundarySpec s;
-  s.type = "box";
-  s.condition = c;
-  s.min = {0, 0};
-  s.max = {1, 1};
-  s.velocity = velocity;
-  s.ramp_time = ramp;
-  return s;
+// A 2D boundary built from its scene object, as the loader and the simulation build it.
+std::unique_ptr<Boundary<2>> make(const nlohmann::json& j, const Vec<2>& size, Real dx) {
+  SceneReader r("test.json", 2);
+  r.set_domain({size[0], size[1]});
+  return make_boundary<2>(r, Node{j, "boundaries[0]"}, BoundaryContext<2>{size, dx});
+}
+
+nlohmann::json box(const std::string& condition, std::vector<double> velocity = {0, 0}, double ramp = 0) {
+  return {{"type", "box"}, {"condition", condition}, {"min", {0, 0}}, {"max", {1, 1}}, {"velocity", velocity},
+          {"ramp_time", ramp}};
 }
 
 TEST(BoxObstacle, StickyMovingBoxDragsNodesWithItsRampedVelocity) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Sticky, {2, 0}, 4), Vec<2>(10, 10), Real(0.1));
+  auto b = make(box("sticky", {2, 0}, 4), Vec<2>(10, 10), Real(0.1));
   // Ramp: u(t) = U t / T, displacement U t^2 / (2 T); after the ramp U (t - T / 2).
   b->move_to(1.0);  // u = 0.5, box spans x in [0.25, 1.25]
   Vec<2> v(7, 7);
@@ -45,7 +46,7 @@ TEST(BoxObstacle, StickyMovingBoxDragsNodesWithItsRampedVelocity) {
 }
 
 TEST(BoxObstacle, SeparateConditionActsOnTheRelativeVelocity) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Separate, {3, 0}), Vec<2>(10, 10), Real(0.1));
+  auto b = make(box("separate", {3, 0}), Vec<2>(10, 10), Real(0.1));
   b->move_to(0.0);
   // Node on the right face (normal +x), moving into the box relative to it (1 < 3): pushed to the box speed.
   Vec<2> v(1, 0.25);
@@ -59,7 +60,7 @@ TEST(BoxObstacle, SeparateConditionActsOnTheRelativeVelocity) {
 }
 
 TEST(BoxObstacle, CornerNodeIsSupportedByBothFaces) {
-  auto b = make_boundary<2>(box(BoundaryCondition::Separate), Vec<2>(10, 10), Real(0.1));
+  auto b = make(box("separate"), Vec<2>(10, 10), Real(0.1));
   Vec<2> v(-1, -1);  // into the box through its top-right corner
   b->apply(Vec<2>(1.0, 1.0), v);
   EXPECT_EQ(v, Vec<2>(0, 0));
@@ -79,20 +80,16 @@ TEST(BoxObstacle, CornerNodeIsSupportedByBothFaces) {
 // and the wall x = 17 H = 1700 m is node 204, 1699.9999 in single precision.
 TEST(BoundaryNodes, NodeOnAFaceOnAGridPlaneGetsTheConditionDespiteRounding) {
   const Real dx = Real(100.0 / 12.0);
-  BoundarySpec s = box(BoundaryCondition::Sticky);
-  s.min = {0, 0};
-  s.max = {900, 100};
-  auto bed = make_boundary<2>(s, Vec<2>(1700, 275), dx);
+  nlohmann::json s = box("sticky");
+  s["max"] = {900, 100};
+  auto bed = make(s, Vec<2>(1700, 275), dx);
   Vec<2> v(-1, -1);
   bed->apply(Vec<2>(Real(108) * dx, Real(6) * dx), v);
   EXPECT_EQ(v, Vec<2>(0, 0));
   v = Vec<2>(-1, -1);  // one node beyond the face: free
   bed->apply(Vec<2>(Real(109) * dx, Real(6) * dx), v);
   EXPECT_EQ(v, Vec<2>(-1, -1));
-  BoundarySpec w;
-  w.type = "walls";
-  w.condition = BoundaryCondition::Slip;
-  auto walls = make_boundary<2>(w, Vec<2>(1700, 275), dx);
+  auto walls = make({{"type", "walls"}, {"condition", "slip"}}, Vec<2>(1700, 275), dx);
   v = Vec<2>(1, 0.5);
   walls->apply(Vec<2>(Real(204) * dx, Real(6) * dx), v);
   EXPECT_EQ(v, Vec<2>(0, 0.5));
@@ -114,7 +111,7 @@ TEST(BoxObstacle, StillWaterBesideASlipBoxIsAsHydrostaticAsBesideAWall) {
       {"output", {{"frames", false}}}};
   const Scene scene = scene_from_json(j, "pool.json");
   Simulation<2> sim(scene);
-  while (sim.time < scene.time.end) sim.step(sim.stable_dt());
+  while (sim.time() < scene.time.end) sim.step(sim.stable_dt());
   const double rho_g_h = 1000 * 9.81 * 40;
   // Mean deviation from hydrostatic of the three particle columns next to each side (depth 5..38 m).
   double box[3] = {0, 0, 0}, wall[3] = {0, 0, 0};

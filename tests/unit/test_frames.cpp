@@ -1,6 +1,6 @@
 // test_frames.cpp - the particle frames' stress tensor (field "stress", Cauchy sigma = tau / J, 3x3 row-major,
 // zero-padded in 2D). Frame 0 of scenes/calving_front_2d.json holds the initial equilibrium state that the
-// seeding prescribes (src/sim/simulation.cpp, seed_body), which the stress must reproduce:
+// seeding prescribes (src/sim/seeding.cpp), which the stress must reproduce:
 //   ice   (lithostatic, laterally free): sigma_yy = -rho_i g (H - y), sigma_xx = sigma_xy = 0;
 //   water (hydrostatic):                 sigma = -p I with p = rho_w g (h - y);
 // and for every particle the frame's "pressure" is -tr(sigma)/2.

@@ -67,7 +67,7 @@ void expect_solids_first(const Simulation<2>& sim) {
   EXPECT_EQ(P.solid_count(), 400u);  // (0.5 / 0.05)^2 cells, 4 particles each
   EXPECT_EQ(P.alpha.size(), P.solid_count());
   for (size_t q = 0; q < P.size(); ++q)
-    ASSERT_EQ(sim.materials[P.material[q]].kind == MaterialKind::Ice, q < P.solid_count()) << "particle " << q;
+    ASSERT_EQ(sim.materials[P.material[q]].traits().solid_state, q < P.solid_count()) << "particle " << q;
 }
 
 TEST(Particles, SimulationSeedsSolidsFirstAndReorderingKeepsThem) {
@@ -103,7 +103,7 @@ TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("CDMPMCK4"), std::string::npos) << what;
-    EXPECT_NE(what.find("CDMPMCK5"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK6"), std::string::npos) << what;
     EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
   }
 }

@@ -49,9 +49,9 @@ json block_scene(int dim, const std::vector<double>& lo, const std::vector<doubl
 
 template <int dim>
 void run_until(Simulation<dim>& sim, double t_end) {
-  while (sim.time < t_end - 1e-12) {
-    const Real dt = std::min<Real>(sim.stable_dt(), static_cast<Real>(t_end - sim.time));
-    sim.step(dt);  // advances sim.time
+  while (sim.time() < t_end - 1e-12) {
+    const Real dt = std::min<Real>(sim.stable_dt(), static_cast<Real>(t_end - sim.time()));
+    sim.step(dt);  // advances sim.time()
   }
 }
 
@@ -68,7 +68,7 @@ void expect_free_fall() {
   // Falls with g: v = -g t and drop g t^2 / 2, both within 1 %; no horizontal motion, no spin.
   EXPECT_NEAR(b.velocity[dim - 1], -g * t, 0.01 * g * t);
   EXPECT_NEAR(z0 - b.centre[dim - 1], 0.5 * g * t * t, 0.01 * 0.5 * g * t * t);
-  const double tol = roundoff(1e-9, sim.steps);
+  const double tol = roundoff(1e-9, sim.steps());
   for (int a = 0; a < dim - 1; ++a) EXPECT_NEAR(b.velocity[a], 0, tol * g * t);
   EXPECT_NEAR(b.omega.norm(), 0, tol * g * t / 0.4);  // 0.4 m: half the block's width
 }
@@ -121,7 +121,7 @@ void expect_spin_conserved() {
   const Momenta<dim> m1 = momenta(sim);
   // Exact up to round-off (sums over ~10^3 particles, ~10^2 steps). L is about the origin, so a round-off
   // dP of the momentum moves it by up to |x_c| dP (x_c: the centre, about 2 m from the origin).
-  const double tol = roundoff(1e-9, sim.steps);
+  const double tol = roundoff(1e-9, sim.steps());
   const double arm = sim.rigid.bodies[0].centre.norm();
   EXPECT_LE((m1.P - m0.P).norm(), tol * m0.P.norm());
   EXPECT_LE((m1.L - m0.L).norm(), tol * (m0.L.norm() + arm * m0.P.norm()));
@@ -154,7 +154,7 @@ TEST(RigidBody, HingedBarTurnsAboutItsPivot) {
   const double alpha = g * d / I_o;
   const auto& B = sim.rigid.bodies[0];
   EXPECT_NEAR(B.omega[0], -alpha * t, 0.01 * alpha * t);
-  EXPECT_NEAR((B.centre - B.pivot).norm(), d, position_roundoff(1e-12, x0 + a) * std::max(1LL, sim.steps));
+  EXPECT_NEAR((B.centre - B.pivot).norm(), d, position_roundoff(1e-12, x0 + a) * std::max(1LL, sim.steps()));
   // Symplectic Euler turns by sum_k omega_k dt = alpha dt^2 n (n + 1) / 2 over n = t / dt steps of the (here
   // constant) time step: alpha t^2 / 2 (1 + dt / t).
   const double dt = sim.stable_dt();

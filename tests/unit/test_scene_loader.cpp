@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "probe/probes.h"
 #include "scene/scene_loader.h"
+#include "sim/simulation.h"
 
 namespace cdmpm {
 namespace {
@@ -73,8 +75,8 @@ TEST(SceneLoader, DefaultsAreFilled) {
   EXPECT_DOUBLE_EQ(s.time.wave_cfl, 0.4);
   EXPECT_DOUBLE_EQ(s.time.max_dt, 0);
   ASSERT_EQ(s.materials.size(), 1u);
-  EXPECT_DOUBLE_EQ(s.materials[0].gamma, 7);
-  EXPECT_DOUBLE_EQ(s.materials[0].viscosity, 0);
+  EXPECT_DOUBLE_EQ(std::get<Water>(s.materials[0].model).eos.gamma, 7);
+  EXPECT_DOUBLE_EQ(std::get<Water>(s.materials[0].model).eos.mu, 0);
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].material_index, 0);
   EXPECT_EQ(s.bodies[0].velocity, (std::vector<double>{0, 0}));
@@ -119,48 +121,48 @@ TEST(SceneLoader, FullSceneRoundTrips) {
   EXPECT_EQ(s.gravity, (std::vector<double>{1, -9}));
   ASSERT_EQ(s.materials.size(), 2u);
   int ice = s.material_index("ice"), water = s.material_index("water");
-  EXPECT_DOUBLE_EQ(s.materials[ice].density, 900);
-  EXPECT_DOUBLE_EQ(s.materials[ice].bulk_modulus, 1e6);
-  EXPECT_DOUBLE_EQ(s.materials[ice].gamma, 3);
-  EXPECT_DOUBLE_EQ(s.materials[ice].viscosity, 0.1);
+  const WeaklyCompressibleWater& eos = std::get<Water>(s.materials[ice].model).eos;
+  EXPECT_DOUBLE_EQ(s.materials[ice].density(), 900);
+  EXPECT_DOUBLE_EQ(eos.K, 1e6);
+  EXPECT_DOUBLE_EQ(eos.gamma, 3);
+  EXPECT_DOUBLE_EQ(eos.mu, 0.1);
 
   ASSERT_EQ(s.bodies.size(), 3u);
   const BodySpec& ball = s.bodies[1];
   EXPECT_EQ(ball.material_index, water);
   EXPECT_EQ(ball.particles_per_cell, 9);
-  EXPECT_EQ(ball.shape.type, "ball");
-  EXPECT_EQ(ball.shape.center, (std::vector<double>{0.3, 0.15}));
-  EXPECT_DOUBLE_EQ(ball.shape.radius, 0.1);
+  const auto& sphere = std::get<BallShape>(ball.shape.model());
+  EXPECT_EQ(sphere.center, (std::vector<double>{0.3, 0.15}));
+  EXPECT_DOUBLE_EQ(sphere.radius, 0.1);
   EXPECT_EQ(ball.velocity, (std::vector<double>{1, 2}));
   EXPECT_FALSE(ball.hydrostatic);
   EXPECT_DOUBLE_EQ(ball.surface_level.value(), 0.25);
   EXPECT_EQ(s.bodies[2].material, "ice");
   EXPECT_EQ(s.bodies[2].material_index, ice);
-  ASSERT_EQ(s.bodies[2].shape.vertices.size(), 3u);
-  EXPECT_DOUBLE_EQ(s.bodies[2].shape.vertices[2][1], 0.1);
+  const auto& triangle = std::get<PolygonShape>(s.bodies[2].shape.model());
+  ASSERT_EQ(triangle.vertices.size(), 3u);
+  EXPECT_DOUBLE_EQ(triangle.vertices[2][1], 0.1);
 
+  // Boundaries and probes keep the object their type checked; the simulation and the run build them from it.
   ASSERT_EQ(s.boundaries.size(), 4u);
-  EXPECT_EQ(s.boundaries[0].condition, BoundaryCondition::Slip);
-  EXPECT_EQ(s.boundaries[0].faces, (std::vector<std::string>{"x-", "x+", "y-"}));
-  EXPECT_EQ(s.boundaries[1].condition, BoundaryCondition::Sticky);
-  EXPECT_EQ(s.boundaries[1].normal, (std::vector<double>{0, 1}));  // normalized
-  EXPECT_EQ(s.boundaries[2].condition, BoundaryCondition::Separate);
-  EXPECT_DOUBLE_EQ(s.boundaries[2].friction, 0.3);
-  EXPECT_EQ(s.boundaries[2].max, (std::vector<double>{0.6, 0.05}));
-  ASSERT_EQ(s.boundaries[3].points.size(), 2u);
-  EXPECT_DOUBLE_EQ(s.boundaries[3].points[1][1], 0.1);
-
+  const std::vector<std::string> boundary_types = {"walls", "half_plane", "box", "bathymetry"};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(s.boundaries[i].type, boundary_types[i]);
+    EXPECT_EQ(s.boundaries[i].path, "boundaries[" + std::to_string(i) + "]");
+    EXPECT_EQ(s.boundaries[i].json, j["boundaries"][i]);
+  }
   ASSERT_EQ(s.probes.size(), 5u);
   EXPECT_DOUBLE_EQ(s.output.probe_interval, 0.002);
-  EXPECT_EQ(s.probes[0].position, (std::vector<double>{0.25, 0.0}));
-  EXPECT_EQ(s.probes[0].material_index, -1);
-  EXPECT_EQ(s.probes[1].material_index, ice);
-  EXPECT_EQ(s.probes[2].axis, 1);
-  EXPECT_EQ(s.probes[2].direction, -1);
-  EXPECT_EQ(s.probes[2].material_index, water);
-  EXPECT_EQ(s.probes[3].position, (std::vector<double>{0.4}));
-  EXPECT_DOUBLE_EQ(s.probes[3].still_level.value(), 0.1);
-  EXPECT_EQ(s.probes[4].type, "mass");
+  const std::vector<std::string> probe_names = {"p_bottom", "ke", "front", "g1", "m"};
+  for (size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(s.probes[i].name, probe_names[i]);
+    EXPECT_EQ(s.probes[i].type, j["probes"]["list"][i]["type"]);
+    EXPECT_EQ(s.probes[i].path, "probes.list[" + std::to_string(i) + "]");
+  }
+  Simulation<2> sim(s);
+  EXPECT_EQ(sim.boundaries.size(), 4u);
+  Probes<2> probes(s, sim);
+  EXPECT_EQ(probes.csv_header(), "time,p_bottom,ke,front,g1,m");
   EXPECT_FALSE(s.output.frames);
   EXPECT_EQ(s.output.checkpoint_every, 10);
   EXPECT_EQ(s.json, j);
@@ -181,9 +183,9 @@ TEST(SceneLoader, ThreeDimensionalScene) {
   })");
   Scene s = scene_from_json(j, "s3.json");
   EXPECT_EQ(s.gravity, (std::vector<double>{0, 0, -9.81}));
-  EXPECT_EQ(s.boundaries[0].faces.size(), 6u);
-  EXPECT_EQ(s.boundaries[1].heights, (std::vector<std::vector<double>>{{0, 0.1, 0.2}, {0, 0.1, 0.3}}));
-  EXPECT_EQ(s.probes[0].position, (std::vector<double>{0.7, 0.5}));
+  EXPECT_EQ(s.boundaries[1].type, "bathymetry");
+  EXPECT_EQ(s.probes[0].json["position"], (std::vector<double>{0.7, 0.5}));
+  EXPECT_EQ(Simulation<3>(s).boundaries.size(), 2u);
 
   j["bodies"][0]["particles_per_cell"] = 4;  // 4 is not a cube
   EXPECT_NE(error_of([&] { scene_from_json(j, "s3.json"); }).find("bodies[0].particles_per_cell"), std::string::npos);
@@ -202,11 +204,11 @@ TEST(SceneLoader, OverridesApplyBeforeValidation) {
                              "materials.water.viscosity=1e-3", "gravity=[0,-1]"});
   EXPECT_DOUBLE_EQ(s.domain.dx, 0.005);
   EXPECT_EQ(s.bodies[0].particles_per_cell, 16);
-  EXPECT_DOUBLE_EQ(s.bodies[0].shape.max[1], 0.25);
+  EXPECT_DOUBLE_EQ(s.bodies[0].shape.upper(1), 0.25);
   EXPECT_EQ(s.name, "renamed");
   EXPECT_FALSE(s.bodies[0].hydrostatic);
   EXPECT_DOUBLE_EQ(s.time.max_dt, 0.001);
-  EXPECT_DOUBLE_EQ(s.materials[0].viscosity, 1e-3);
+  EXPECT_DOUBLE_EQ(std::get<Water>(s.materials[0].model).eos.mu, 1e-3);
   EXPECT_EQ(s.gravity, (std::vector<double>{0, -1}));
   EXPECT_EQ(s.json["time"]["max_dt"], 0.001);
   // A quoted JSON string works too.

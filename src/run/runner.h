@@ -1,6 +1,7 @@
 // runner.h - drives a simulation from t = 0 (or a checkpoint) to the scene's end time: picks each time step,
-// hits output times exactly, writes frames, probes, checkpoints and summary.json, shows progress, and
-// stops with status "unstable" and a clear reason if the state goes bad.
+// lands on output times exactly, has the output files written (run/run_files.h), shows progress
+// (run/progress.h), stops with status "unstable" and a clear reason if the state goes bad, and writes
+// summary.json (run/summary.h).
 #pragma once
 
 #include <string>

@@ -1,0 +1,109 @@
+// bathymetry.cpp - the "bathymetry" boundary: terrain below which all is solid, with the normal of the terrain.
+// 2D: a piecewise-linear profile through points (x_k, h_k) (x strictly increasing), constant beyond its ends.
+// 3D: a height field heights[j][i] at (origin[0] + i spacing[0], origin[1] + j spacing[1]), bilinearly
+// interpolated and clamped at its edges. Scene keys: 2D points; 3D origin, spacing, heights.
+#include <algorithm>
+#include <cmath>
+
+#include "boundary/mirror.h"
+
+namespace cdmpm {
+namespace {
+
+// 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
+class Bathymetry2D final : public Boundary<2> {
+ public:
+  Bathymetry2D(const SceneReader& r, const Node& n, Real dx) : Boundary<2>(r, n, dx) {
+    Strings keys = Boundary<2>::common_keys();
+    keys.push_back("points");
+    r.object(n, keys);
+    Node points = r.required(n, "points");
+    pts_ = r.pairs(points, 2);
+    for (size_t i = 1; i < pts_.size(); ++i)
+      if (!(pts_[i][0] > pts_[i - 1][0]))
+        r.expected(points[i], "a point with x > " + format_number(pts_[i - 1][0]) + " (x strictly increasing)");
+  }
+  bool is_solid(const Vec<2>& x) const override {
+    Real slope;
+    return x[1] < height(x[0], slope);
+  }
+  void apply(const Vec<2>& x, Vec<2>& v) const override {
+    Real slope;
+    const Real h = height(x[0], slope);
+    if (x[1] <= h + tol_) apply_condition<2>(condition_, friction_, Vec<2>(-slope, 1).normalized(), v);
+  }
+
+ private:
+  // The profile's height at x and its slope there.
+  Real height(Real x0, Real& slope) const {
+    Real h;
+    slope = 0;
+    if (x0 <= pts_.front()[0]) h = static_cast<Real>(pts_.front()[1]);
+    else if (x0 >= pts_.back()[0]) h = static_cast<Real>(pts_.back()[1]);
+    else {
+      const auto it = std::upper_bound(pts_.begin(), pts_.end(), static_cast<double>(x0),
+                                       [](double xv, const std::array<double, 2>& p) { return xv < p[0]; });
+      const auto& b = *it;
+      const auto& a = *(it - 1);
+      slope = static_cast<Real>((b[1] - a[1]) / (b[0] - a[0]));
+      h = static_cast<Real>(a[1]) + slope * (x0 - static_cast<Real>(a[0]));
+    }
+    return h;
+  }
+  std::vector<std::array<double, 2>> pts_;
+};
+
+// 3D bathymetry: solid below a bilinearly interpolated height field z = h(x, y), clamped at its edges.
+class HeightField3D final : public Boundary<3> {
+ public:
+  HeightField3D(const SceneReader& r, const Node& n, Real dx) : Boundary<3>(r, n, dx) {
+    Strings keys = Boundary<3>::common_keys();
+    keys.insert(keys.end(), {"origin", "spacing", "heights"});
+    r.object(n, keys);
+    const std::vector<double> origin = r.numbers(r.required(n, "origin"), 2);
+    const std::vector<double> spacing = r.numbers(r.required(n, "spacing"), 2, gt(0));
+    ox_ = origin[0], oy_ = origin[1], sx_ = spacing[0], sy_ = spacing[1];
+    Node heights = r.required(n, "heights");
+    size_t rows = r.array(heights, 2, "an array of at least 2 rows of heights");
+    size_t cols = r.array(heights[0], 2, "an array of at least 2 heights");
+    for (size_t row = 0; row < rows; ++row) h_.push_back(r.numbers(heights[row], cols));
+  }
+  bool is_solid(const Vec<3>& x) const override {
+    double dhdx, dhdy;
+    return x[2] < height(x, dhdx, dhdy);
+  }
+  void apply(const Vec<3>& x, Vec<3>& v) const override {
+    double dhdx, dhdy;
+    const double h = height(x, dhdx, dhdy);
+    if (x[2] > h + tol_) return;
+    apply_condition<3>(condition_, friction_, Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized(), v);
+  }
+
+ private:
+  // Bilinear height at (x, y) and its gradient.
+  double height(const Vec<3>& x, double& dhdx, double& dhdy) const {
+    const int nx = static_cast<int>(h_[0].size()), ny = static_cast<int>(h_.size());
+    const double u = std::clamp((x[0] - ox_) / sx_, 0.0, nx - 1.0), w = std::clamp((x[1] - oy_) / sy_, 0.0, ny - 1.0);
+    const int i = std::min(static_cast<int>(u), nx - 2), j = std::min(static_cast<int>(w), ny - 2);
+    const double fu = u - i, fw = w - j;
+    const double h00 = h_[j][i], h10 = h_[j][i + 1], h01 = h_[j + 1][i], h11 = h_[j + 1][i + 1];
+    const double h = (1 - fw) * ((1 - fu) * h00 + fu * h10) + fw * ((1 - fu) * h01 + fu * h11);
+    dhdx = ((1 - fw) * (h10 - h00) + fw * (h11 - h01)) / sx_;
+    dhdy = ((1 - fu) * (h01 - h00) + fu * (h11 - h10)) / sy_;
+    return h;
+  }
+  double ox_ = 0, oy_ = 0, sx_ = 1, sy_ = 1;
+  std::vector<std::vector<double>> h_;
+};
+
+}  // namespace
+
+template <int dim>
+std::unique_ptr<Boundary<dim>> make_bathymetry(const SceneReader& r, const Node& n, const BoundaryContext<dim>& ctx) {
+  if constexpr (dim == 2) return std::make_unique<Bathymetry2D>(r, n, ctx.dx);
+  else return std::make_unique<HeightField3D>(r, n, ctx.dx);
+}
+template std::unique_ptr<Boundary<2>> make_bathymetry<2>(const SceneReader&, const Node&, const BoundaryContext<2>&);
+template std::unique_ptr<Boundary<3>> make_bathymetry<3>(const SceneReader&, const Node&, const BoundaryContext<3>&);
+
+}  // namespace cdmpm

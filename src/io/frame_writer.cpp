@@ -1,0 +1,73 @@
+// frame_writer.cpp - a simulation's particles as a .vtu frame (frame_writer.h).
+#include "io/frame_writer.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "io/vtu_writer.h"
+#include "material/stress.h"
+
+namespace cdmpm {
+namespace {
+
+// The materials' extra field names, each once, in the order of the material table; and for every material,
+// the column of each of its fields in that list.
+struct ExtraFields {
+  Strings names;
+  std::vector<std::vector<int>> column;  // per material
+  explicit ExtraFields(const std::vector<Material>& materials) {
+    for (const Material& m : materials) {
+      column.emplace_back();
+      for (const std::string& f : m.visit([](const auto& model) { return model.field_names(); })) {
+        auto it = std::find(names.begin(), names.end(), f);
+        if (it == names.end()) it = names.insert(names.end(), f);
+        column.back().push_back(static_cast<int>(it - names.begin()));
+      }
+      if (column.back().size() > max_per_material) throw std::logic_error("a material model has more than 16 output fields");
+    }
+  }
+  static constexpr size_t max_per_material = 16;
+};
+
+}  // namespace
+
+template <int dim>
+void write_frame(const std::string& path, const Simulation<dim>& sim) {
+  const auto& P = sim.particles;
+  const size_t n = P.size();
+  std::vector<double> pts(3 * n, 0.0);
+  VtuField vel{"velocity", 3, std::vector<float>(3 * n, 0.f), {}, {}};
+  VtuField mat{"material", 1, {}, {}, std::vector<int32_t>(P.material.begin(), P.material.end())};
+  VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
+  VtuField J{"J", 1, std::vector<float>(n), {}, {}};
+  VtuField stress{"stress", 9, std::vector<float>(9 * n, 0.f), {}, {}};
+  const ExtraFields extra(sim.materials);
+  std::vector<VtuField> more;
+  for (const std::string& name : extra.names) more.push_back({name, 1, std::vector<float>(n, 0.f), {}, {}});
+#pragma omp parallel for schedule(static)
+  for (size_t q = 0; q < n; ++q) {
+    const Material& m = sim.materials[P.material[q]];
+    for (int a = 0; a < dim; ++a) {
+      pts[3 * q + a] = P.x[q][a];
+      vel.f32[3 * q + a] = static_cast<float>(P.v[q][a]);
+    }
+    pres.f32[q] = static_cast<float>(particle_pressure(m, P, q));
+    J.f32[q] = static_cast<float>(P.J[q]);
+    const Mat<dim> sigma = cauchy_stress(m, P, q);
+    for (int a = 0; a < dim; ++a)
+      for (int b = 0; b < dim; ++b) stress.f32[9 * q + 3 * a + b] = static_cast<float>(sigma(a, b));
+    const std::vector<int>& cols = extra.column[P.material[q]];
+    if (cols.empty()) continue;
+    float values[ExtraFields::max_per_material] = {};
+    m.visit([&](const auto& model) { model.template fields<dim>(P, q, values); });
+    for (size_t k = 0; k < cols.size(); ++k) more[cols[k]].f32[q] = values[k];
+  }
+  std::vector<VtuField> fields = {vel, mat, pres, J, stress};
+  fields.insert(fields.end(), more.begin(), more.end());
+  write_vtu(path, pts, fields);
+}
+
+template void write_frame<2>(const std::string&, const Simulation<2>&);
+template void write_frame<3>(const std::string&, const Simulation<3>&);
+
+}  // namespace cdmpm

@@ -1,0 +1,128 @@
+// ice.h - the "ice" material: split Neo-Hookean elasticity (material/neo_hookean_split.h) with non-associative
+// Cohesive Cam Clay plasticity and softening (material/cohesive_cam_clay.h); Wolper et al. 2019 (CD-MPM), 2021.
+//
+// State: the elastic deformation gradient F and the hardening variable alpha (core/particles.h: solids), and
+// the total volume ratio J. The update after g2p (Jiang et al. 2016 course notes, eq. 202; Wolper et al. 2019,
+// sec. 4):
+//   J <- J (1 + dt tr C_p),   F_trial = (I + dt C_p) F,   then the return mapping projects F_trial onto the
+//   yield surface and updates alpha.
+// Damage d = 1 - p0(alpha) / p0_initial in [0, 1]: 0 intact, 1 all cohesion lost. Fastest wave: the P-wave
+// speed sqrt(M_p / rho), M_p = kappa + 2 mu (1 - 1/d), raised by the density ratio max(det F, 1) (the
+// volumetric tangent kappa/2 (J^2 + 1) J-scaled grows like J^2 in tension). Seeded under a lithostatic
+// vertical stress -p with sigma_h = 0 (a laterally free slab on a bed): F = diag(s_h, s_v).
+// Scene keys (docs/ice.md, docs/scenes.md): density, youngs_modulus, poissons_ratio (0.3); M or
+// friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "material/cohesive_cam_clay.h"
+#include "material/material_model.h"
+#include "material/neo_hookean_split.h"
+
+namespace cdmpm {
+
+struct Ice {
+  static constexpr std::string_view type = "ice";
+  static constexpr MaterialTraits traits{.solid_state = true, .breakable = true};
+  Real rho0 = 0;
+  NeoHookeanSplit elastic;
+  CohesiveCamClay plastic;
+  bool plasticity = true;   // false: purely elastic (no return mapping)
+  Real p0_initial = 0;      // pre-consolidation pressure of intact ice [Pa]
+  Real alpha_initial = 0;   // alpha giving p0_initial
+
+  static Ice parse(const SceneReader& r, const Node& n);
+
+  Real p0(Real alpha) const { return plastic.p0_of_alpha(alpha, elastic.kappa); }
+  Real damage(Real alpha) const { return plasticity ? CohesiveCamClay::damage(p0(alpha), p0_initial) : Real(0); }
+
+  Real density() const { return rho0; }
+  template <int dim>
+  Mat<dim> kirchhoff(const Particles<dim>& p, size_t q) const { return elastic.kirchhoff<dim>(p.F[q]); }
+  template <int dim>
+  Real volume_ratio(const Particles<dim>& p, size_t q) const { return p.F[q].determinant(); }
+  template <int dim>
+  Real pressure(const Particles<dim>& p, size_t q) const {
+    const Real Je = volume_ratio(p, q);
+    return elastic.pressure_of_J(Je) / Je;
+  }
+  template <int dim>
+  Real energy_density(const Particles<dim>& p, size_t q) const { return elastic.energy_density<dim>(p.F[q]); }
+  template <int dim>
+  Real stiffening(const Particles<dim>& p, size_t q) const { return std::max(p.F[q].determinant(), Real(1)); }
+  template <int dim>
+  Real wave_speed(Real s) const { return s * std::sqrt(elastic.p_wave_modulus<dim>() / rho0); }
+  Real stable_dt(Real, int) const { return no_time_step_limit; }
+  template <int dim>
+  void update(Particles<dim>& p, size_t q, Real dt) const {
+    p.J[q] *= Real(1) + dt * p.C[q].trace();
+    Mat<dim> F = (Mat<dim>::Identity() + dt * p.C[q]) * p.F[q];
+    if (plasticity) plastic.return_mapping<dim>(F, p.alpha[q], p0(p.alpha[q]), elastic);
+    p.F[q] = F;
+  }
+  template <int dim>
+  InitialState<dim> initial_state(Real pressure) const {
+    const Vec<dim> st = elastic.template uniaxial_vertical_stretches<dim>(-pressure);
+    return {st.prod(), st.asDiagonal(), alpha_initial};
+  }
+  // Damage in [0, 1], the hardening variable alpha and the current strength p0(alpha) [Pa].
+  std::vector<std::string> field_names() const { return {"damage", "alpha", "p0"}; }
+  template <int dim>
+  void fields(const Particles<dim>& p, size_t q, float* out) const {
+    out[0] = static_cast<float>(damage(p.alpha[q]));
+    out[1] = static_cast<float>(p.alpha[q]);
+    out[2] = static_cast<float>(plasticity ? p0(p.alpha[q]) : Real(0));
+  }
+};
+
+// Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
+inline Ice Ice::parse(const SceneReader& r, const Node& m) {
+  r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
+               "alpha0", "tensile_strength", "hardening", "plastic"});
+  Ice ice;
+  ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), gt(0)));
+  const double E = r.number(r.required(m, "youngs_modulus"), gt(0));
+  const double nu = r.number(m, "poissons_ratio", {-1, 0.5, true, true}, 0.3);
+  ice.plasticity = r.boolean(m, "plastic", true);
+  ice.plastic.hardening = r.boolean(m, "hardening", true);
+  ice.elastic = NeoHookeanSplit::from_young_poisson(static_cast<Real>(E), static_cast<Real>(nu), r.dim());
+  if (!ice.plasticity) {
+    for (const char* key : {"M", "friction_angle", "beta", "xi", "p0", "alpha0", "tensile_strength"})
+      if (m.has(key)) r.fail(m.child(key), "not used when \"plastic\" is false (remove it)");
+    ice.plastic.M = ice.plastic.beta = ice.plastic.xi = 0;
+    return ice;
+  }
+  if (m.has("M") == m.has("friction_angle"))
+    r.fail(m.path, "expected exactly one of \"M\" (critical-state slope) or \"friction_angle\" (degrees)");
+  // friction_angle: the triaxial-compression Mohr-Coulomb match M = 6 sin(phi) / (3 - sin(phi)).
+  const double phi = m.has("M") ? 0 : r.number(m["friction_angle"], {0, 90, true, true}) * std::numbers::pi / 180;
+  ice.plastic.M = static_cast<Real>(m.has("M") ? r.number(m["M"], gt(0)) : 6 * std::sin(phi) / (3 - std::sin(phi)));
+  ice.plastic.beta = static_cast<Real>(r.number(r.required(m, "beta"), gt(0)));
+  ice.plastic.xi = static_cast<Real>(r.number(r.required(m, "xi"), gt(0)));
+  if (m.has("p0") + m.has("alpha0") + m.has("tensile_strength") != 1)
+    r.fail(m.path, "expected exactly one of \"p0\" [Pa], \"alpha0\" or \"tensile_strength\" [Pa] (initial strength)");
+  const double p0_max = 0.5 * ice.elastic.kappa;  // the Kirchhoff pressure of the split model never exceeds kappa/2
+  double p0 = 0;
+  if (m.has("p0")) {
+    p0 = r.number(m["p0"], {0, p0_max, true, true}, " (the initial p0 must be below kappa/2 = " + format_number(p0_max) + " Pa)");
+  } else if (m.has("alpha0")) {
+    p0 = ice.plastic.p0_of_alpha(static_cast<Real>(r.number(m["alpha0"], {-Range::inf, 0, false, false})), ice.elastic.kappa);
+    if (!(p0 < p0_max)) r.expected(m["alpha0"], "a value giving p0 < kappa/2 = " + format_number(p0_max) + " Pa");
+  } else {
+    // The uniaxial strength of the yield surface is proportional to p0.
+    const double per_p0 = r.dim() == 2 ? ice.plastic.uniaxial_strength<2>(1, true) : ice.plastic.uniaxial_strength<3>(1, true);
+    p0 = r.number(m["tensile_strength"], gt(0)) / per_p0;
+    if (!(p0 < p0_max))
+      r.expected(m["tensile_strength"], "a strength below " + format_number(p0_max * per_p0) + " Pa (it needs p0 = " +
+                                            format_number(p0) + " Pa, above kappa/2)");
+  }
+  // Damage is measured against the strength the particle actually starts with.
+  ice.alpha_initial = ice.plastic.alpha_of_p0(static_cast<Real>(p0), ice.elastic.kappa);
+  ice.p0_initial = ice.p0(ice.alpha_initial);
+  return ice;
+}
+
+}  // namespace cdmpm

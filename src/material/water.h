@@ -1,0 +1,33 @@
+// water.h - the "water" material: a weakly compressible fluid (material/weakly_compressible_water.h: Tait
+// equation of state p(J) = K/gamma (J^-gamma - 1), cut off at p >= 0, optional Newtonian viscosity; stress,
+// energy, wave speed and initial state in material/tait_state.h).
+//
+// State: the total volume ratio J = V / V0, advanced by the discrete continuity equation
+//   J <- J (1 + dt tr C_p)                  (dJ/dt = J div v, C_p the particle's velocity gradient).
+// Viscosity adds the explicit diffusion limit dt <= dx^2 rho / (2 dim mu).
+// Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0) - docs/scenes.md.
+#pragma once
+
+#include "material/tait_state.h"
+
+namespace cdmpm {
+
+struct Water : TaitState {
+  static constexpr std::string_view type = "water";
+  static constexpr MaterialTraits traits{.fluid = true};
+
+  static Water parse(const SceneReader& r, const Node& n) {
+    r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
+    Water w;
+    w.eos = read_eos(r, n);
+    w.eos.mu = static_cast<Real>(r.number(n, "viscosity", ge(0), 0.0));
+    return w;
+  }
+  Real stable_dt(Real dx, int dim) const {
+    return eos.mu > 0 ? dx * dx * eos.rho0 / (Real(2 * dim) * eos.mu) : no_time_step_limit;
+  }
+  template <int dim>
+  void update(Particles<dim>& p, size_t q, Real dt) const { p.J[q] *= Real(1) + dt * p.C[q].trace(); }
+};
+
+}  // namespace cdmpm

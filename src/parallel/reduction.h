@@ -1,0 +1,28 @@
+// reduction.h - the one interface through which every global quantity is combined across processes: the
+// largest speed and wave speed (time step), the stability check, energies and mass, probe values, rigid-body
+// sums and iceberg detection. Each caller first reduces over its own particles (OpenMP, in a fixed order
+// where the result must not depend on the thread count), then passes its partial result here.
+//
+// One process (this build): every function is the identity. A distributed build (docs/architecture.md) makes
+// them collective: max/min are exact in any order; sums are combined in rank order of a partition that
+// follows the global block order, so a result does not depend on how the work was split within a rank, and
+// gather() collects per-process records in rank order (iceberg detection needs all ice cells).
+#pragma once
+
+#include <vector>
+
+namespace cdmpm::global {
+
+inline double sum(double local) { return local; }
+inline double max(double local) { return local; }
+inline double min(double local) { return local; }
+template <class T>
+void sum(std::vector<T>&) {}
+template <class T>
+void max(std::vector<T>&) {}
+template <class T>
+void gather(std::vector<T>&) {}
+inline int rank() { return 0; }
+inline int ranks() { return 1; }
+
+}  // namespace cdmpm::global

@@ -1,0 +1,101 @@
+// run_files.cpp - the output files of a run and its checkpoints (run_files.h).
+#include "run/run_files.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "io/frame_writer.h"
+#include "io/vtu_writer.h"
+
+namespace cdmpm {
+namespace fs = std::filesystem;
+
+template <int dim>
+RunFiles<dim>::RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs)
+    : out_(out_dir), sim_(sim), probes_(probes), icebergs_(icebergs) {}
+
+template <int dim>
+void RunFiles<dim>::open_tables(bool append) {
+  const auto mode = append ? std::ios::app : std::ios::trunc;
+  csv_.open(path("probes.csv"), mode);
+  if (!csv_) throw std::runtime_error(path("probes.csv").string() + ": cannot write");
+  csv_.precision(10);
+  if (!icebergs_.active()) return;
+  bergs_.open(path("icebergs.csv"), mode);
+  if (!bergs_) throw std::runtime_error(path("icebergs.csv").string() + ": cannot write");
+  bergs_.precision(10);
+}
+
+template <int dim>
+void RunFiles<dim>::start() {
+  fs::create_directories(out_);
+  open_tables(false);
+  if (icebergs_.active()) bergs_ << IcebergTracker<dim>::csv_header() << '\n';
+  meta.wave_dt_at_start = sim_.wave_dt_at_start;
+  csv_ << probes_.csv_header() << '\n';
+  write_probes();
+  write_frame();
+}
+
+template <int dim>
+void RunFiles<dim>::resume() {
+  const std::string ckpt = path("checkpoint.bin").string();
+  const size_t seeded = sim_.particles.size(), seeded_solids = sim_.particles.solid_count();
+  meta = read_checkpoint(ckpt, sim_.particles);
+  // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
+  const bool fewer_allowed = !sim_.scene.sinks.empty();
+  const size_t n = sim_.particles.size(), ns = sim_.particles.solid_count();
+  const bool fits = fewer_allowed ? n <= seeded && ns <= seeded_solids : n == seeded && ns == seeded_solids;
+  if (!fits)
+    throw std::runtime_error(ckpt + ": checkpoint holds " + std::to_string(n) + " particles (" + std::to_string(ns) +
+                             " ice), the scene seeds " + (fewer_allowed ? "at most " : "") + std::to_string(seeded) + " (" +
+                             std::to_string(seeded_solids) + " ice): resume with the scene and --set values of the run that wrote it");
+  sim_.restore(meta.time, meta.steps, static_cast<Real>(meta.wave_dt_at_start));
+  if (!probes_.load_state(meta.probe_state))
+    throw std::runtime_error(ckpt + ": checkpoint holds the state of other probes than the scene's");
+  if (!sim_.rigid.load(meta.rigid_bodies))
+    throw std::runtime_error(ckpt + ": checkpoint holds the state of another set of rigid bodies than the scene's");
+  icebergs_.first_ = meta.first_iceberg;
+  if (fs::exists(path("probes.csv"))) fs::resize_file(path("probes.csv"), meta.probes_csv_bytes);
+  if (icebergs_.active() && fs::exists(path("icebergs.csv"))) fs::resize_file(path("icebergs.csv"), meta.icebergs_csv_bytes);
+  open_tables(true);
+}
+
+template <int dim>
+void RunFiles<dim>::write_probes() {
+  csv_ << sim_.time();
+  for (double v : probes_.sample(sim_)) csv_ << ',' << v;
+  csv_ << '\n';
+  csv_.flush();
+}
+
+// The frame of index meta.frame_index (if the scene writes frames), listed in particles.pvd, and the bodies of
+// intact ice at that moment.
+template <int dim>
+void RunFiles<dim>::write_frame() {
+  if (sim_.scene.output.frames) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%04lld.vtu", meta.frame_index);
+    cdmpm::write_frame(path(name).string(), sim_);
+    meta.frames.emplace_back(sim_.time(), name);
+    write_pvd(path("particles.pvd").string(), meta.frames);
+  }
+  icebergs_.write_frame(bergs_, meta.frame_index);
+}
+
+template <int dim>
+void RunFiles<dim>::checkpoint() {
+  meta.time = sim_.time();
+  meta.steps = sim_.steps();
+  meta.probes_csv_bytes = static_cast<uint64_t>(fs::file_size(path("probes.csv")));
+  meta.icebergs_csv_bytes = icebergs_.active() ? static_cast<uint64_t>(fs::file_size(path("icebergs.csv"))) : 0;
+  meta.first_iceberg = icebergs_.first_;
+  meta.rigid_bodies = sim_.rigid.save();
+  meta.probe_state = probes_.save_state();
+  write_checkpoint(path("checkpoint.bin").string(), sim_.particles, meta);
+}
+
+template class RunFiles<2>;
+template class RunFiles<3>;
+
+}  // namespace cdmpm

@@ -1,0 +1,51 @@
+// run_files.h - the files a run writes under its output folder, kept consistent with its checkpoints:
+//   probes.csv              one row per probe sample (probe/probes.h),
+//   icebergs.csv            scenes with breakable ice: the bodies of intact ice per frame (probe/iceberg_tracker.h),
+//   particles_NNNN.vtu      the frames (io/frame_writer.h), listed with their times in particles.pvd,
+//   checkpoint.bin          the state to resume from (io/checkpoint.h), with the sizes of the two CSV files at
+//                           that moment, so that a resumed run cuts them back to where the checkpoint was taken.
+// A fresh run creates the folder and the files; a resumed run reads the checkpoint into the simulation, the
+// probes and the iceberg tracker, and appends to the files.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/checkpoint.h"
+#include "probe/iceberg_tracker.h"
+#include "probe/probes.h"
+#include "sim/simulation.h"
+
+namespace cdmpm {
+
+template <int dim>
+class RunFiles {
+ public:
+  RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs);
+  // Creates the output files and writes the initial probe sample, frame and icebergs.
+  void start();
+  // Loads the checkpoint into the simulation, probes and tracker and reopens the files for appending.
+  void resume();
+
+  void write_probes();
+  void write_frame();
+  // Detection at a probe sample (the first iceberg); true if it was found just now.
+  bool sample_icebergs() { return icebergs_.sample(bergs_, meta.frame_index); }
+  void checkpoint();
+  // Closes probes.csv (summary.json's wave report reads it).
+  void close() { csv_.close(); }
+  std::filesystem::path path(const std::string& name) const { return out_ / name; }
+
+  CheckpointMeta meta;  // frame and probe indices, frames written, ... (what a checkpoint records)
+
+ private:
+  void open_tables(bool append);
+  std::filesystem::path out_;
+  Simulation<dim>& sim_;
+  Probes<dim>& probes_;
+  IcebergTracker<dim>& icebergs_;
+  std::ofstream csv_, bergs_;
+};
+
+}  // namespace cdmpm

@@ -1,0 +1,147 @@
+// runner.cpp - the time loop (see runner.h). Output files under --out: particles_NNNN.vtu + particles.pvd
+// (frames), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
+// waves.csv for scenes with wave gauges (probe/wave_report.h).
+#include "run/runner.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "run/output_schedule.h"
+#include "run/progress.h"
+#include "run/run_files.h"
+#include "run/summary.h"
+
+namespace cdmpm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A time step that has collapsed below 1e-3 of the acoustic limit at the start means a blow-up.
+template <int dim>
+std::optional<std::string> collapsed(const Simulation<dim>& sim, Real dt) {
+  if (dt >= Real(1e-3) * sim.wave_dt_at_start && dt > 0) return std::nullopt;
+  std::ostringstream os;
+  os << "time step collapsed to " << dt << " s, below 1e-3 of the acoustic limit " << sim.wave_dt_at_start
+     << " s: max particle speed " << sim.max_speed << " m/s at t = " << sim.time() << " s, step " << sim.steps();
+  return os.str();
+}
+
+template <int dim>
+class TimeLoop {
+ public:
+  TimeLoop(const Scene& scene, const RunOptions& opt)
+      : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), files_(opt.out_dir, sim_, probes_, icebergs_),
+        frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
+        e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)) {}
+
+  RunResult run() {
+    if (opt_.resume) resume();
+    else files_.start();
+    times_.setup = elapsed();
+    Progress progress(opt_.progress, sim_.time(), scene_.time.end);
+    RunResult result{"completed", "", 0};
+    const long long first_step = sim_.steps();
+    while (sim_.time() < scene_.time.end) {
+      if (auto bad = step()) {
+        result = {"unstable", *bad, 3};
+        break;
+      }
+      if (auto why = stop_reason(first_step)) {
+        result.reason = *why;
+        break;
+      }
+      progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
+    }
+    times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
+    if (result.status == "completed") files_.checkpoint();
+    progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
+    if (result.status != "completed") std::cerr << "cdmpm: run unstable: " << result.reason << "\n";
+    files_.close();
+    times_.wall = elapsed();
+    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_.resume);
+    return result;
+  }
+
+ private:
+  void resume() {
+    files_.resume();
+    frames_.resume_at(sim_.time(), files_.meta.frame_index);
+    samples_.resume_at(sim_.time(), files_.meta.probe_index);
+  }
+
+  // One step, landing on the next output time if it is within reach, then the outputs due at its end.
+  // Returns why the state went bad, if it did.
+  std::optional<std::string> step() {
+    const Real dt = sim_.stable_dt();
+    if (auto bad = collapsed(sim_, dt)) return bad;
+    const double next_frame = frames_.next(files_.meta.frame_index, scene_.time.end);
+    const double next_sample = samples_.next(files_.meta.probe_index, scene_.time.end);
+    const double target = std::min(next_frame, next_sample);
+    times_.particle_steps += double(sim_.particles.size());
+    const bool hit = sim_.time() + dt >= target;
+    if (hit) sim_.step_until(target);
+    else sim_.step(dt);
+    if (auto bad = sim_.check_state()) return bad;
+    if (hit && target == next_sample) sample();
+    if (hit && target == next_frame) frame();
+    return std::nullopt;
+  }
+
+  void sample() {
+    ++files_.meta.probe_index;
+    files_.write_probes();
+    if (files_.sample_icebergs() && opt_.progress) {
+      const auto& f = icebergs_.first_;
+      std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", isatty(fileno(stderr)) ? "\n" : "",
+                   f[0], f[1], f[2]);
+    }
+  }
+
+  void frame() {
+    ++files_.meta.frame_index;
+    files_.write_frame();
+    const int every = scene_.output.checkpoint_every;
+    if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
+  }
+
+  // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)
+  // or after --steps.
+  std::optional<std::string> stop_reason(long long first_step) const {
+    const double after = scene_.output.stop_after_first;
+    if (after >= 0 && !icebergs_.first_.empty() && sim_.time() >= icebergs_.first_[0] + after) {
+      std::ostringstream os;
+      os << "stopped " << after << " s after the first iceberg (output.icebergs.stop_after_first)";
+      return os.str();
+    }
+    if (opt_.max_steps > 0 && sim_.steps() - first_step >= opt_.max_steps)
+      return "stopped after " + std::to_string(opt_.max_steps) + " steps (--steps)";
+    return std::nullopt;
+  }
+
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  const Clock::time_point start_ = Clock::now();
+  const Scene& scene_;
+  const RunOptions& opt_;
+  Simulation<dim> sim_;
+  Probes<dim> probes_;
+  IcebergTracker<dim> icebergs_;
+  RunFiles<dim> files_;
+  OutputSchedule frames_, samples_;
+  EnergyTotals e0_;
+  RunTimes times_;
+};
+
+}  // namespace
+
+RunResult run_scene(const Scene& scene, const RunOptions& opt) {
+  if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  return scene.dim == 2 ? TimeLoop<2>(scene, opt).run() : TimeLoop<3>(scene, opt).run();
+}
+
+}  // namespace cdmpm

@@ -1,0 +1,68 @@
+// summary.cpp - summary.json (summary.h).
+#include "run/summary.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "io/process_memory.h"
+#include "probe/wave_report.h"
+#include "sim/phases.h"
+
+namespace cdmpm {
+namespace {
+
+nlohmann::json energy_json(const EnergyTotals& e) {
+  return {{"kinetic", e.kinetic}, {"gravitational", e.gravitational}, {"elastic", e.elastic}, {"total", e.total()}};
+}
+
+}  // namespace
+
+template <int dim>
+void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
+                   const EnergyTotals& e0, const RunTimes& t, const RunResult& result, bool resumed) {
+  const Scene& scene = sim.scene;
+  const std::filesystem::path out(out_dir);
+  const EnergyTotals e1 = energy_totals(sim.particles, sim.materials, sim.gravity);
+  nlohmann::json s;
+  s["scene"] = scene.name;
+  s["scene_file"] = scene.path;
+  s["parameters"] = scene.parameters;
+  s["dim"] = dim;
+  s["particles"] = sim.particles.size();
+  s["steps"] = sim.steps();
+  s["sim_time"] = sim.time();
+  s["wall_time"] = t.wall;
+  s["particle_steps_per_second"] = t.particle_steps / std::max(t.wall, 1e-9);
+  // The same without the set-up and the final checkpoint: the stepping rate (frames, probes and checkpoints
+  // written during the run are included).
+  s["setup_wall_time"] = t.setup;
+  s["stepping_particle_steps_per_second"] = t.particle_steps / std::max(t.loop_end - t.setup, 1e-9);
+  nlohmann::json phases;
+  for (size_t k = 0; k < phase_names.size(); ++k) phases[phase_names[k]] = sim.phase_timer().seconds(static_cast<Phase>(k));
+  s["phase_seconds"] = phases;
+  const double peak_memory = peak_rss_bytes();
+  s["peak_memory_bytes"] = peak_memory;
+  s["bytes_per_particle"] = peak_memory / std::max<double>(1, double(sim.particles.size()));
+  s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
+  s["energy"] = energy_json(e1);
+  s["energy_initial"] = energy_json(e0);
+  if (icebergs.active()) s["first_iceberg"] = icebergs.summary();
+  s.update(wave_report(scene, (out / "probes.csv").string(), (out / "waves.csv").string()));
+  s["status"] = result.status;
+  s["reason"] = result.reason;
+  s["resumed"] = resumed;
+  s["threads"] = omp_get_max_threads();
+  s["precision"] = sizeof(Real) == 8 ? "double" : "single";
+  s["version"] = CDMPM_VERSION;
+  std::ofstream((out / "summary.json").string()) << s.dump(2) << '\n';
+}
+
+template void write_summary<2>(const std::string&, const Simulation<2>&, const IcebergTracker<2>&, const EnergyTotals&,
+                               const RunTimes&, const RunResult&, bool);
+template void write_summary<3>(const std::string&, const Simulation<3>&, const IcebergTracker<3>&, const EnergyTotals&,
+                               const RunTimes&, const RunResult&, bool);
+
+}  // namespace cdmpm

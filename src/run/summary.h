@@ -1,0 +1,27 @@
+// summary.h - summary.json, written at the end of every run (completed, unstable or stopped): the scene and
+// its resolved parameters, particles, steps, simulated and wall time, particle-steps per second (overall and
+// while stepping), the wall time of each phase of the step (phase_seconds, sim/phases.h), peak memory and
+// bytes per particle, mass change, energies at the start and the end, the first iceberg, the wave report of
+// the gauges (probe/wave_report.h), status and reason, threads, precision and version.
+#pragma once
+
+#include <string>
+
+#include "probe/energy.h"
+#include "probe/iceberg_tracker.h"
+#include "run/runner.h"
+#include "sim/simulation.h"
+
+namespace cdmpm {
+
+// Wall-clock figures of a run [s]: its total, the set-up (seeding or reading the checkpoint, first frame) and
+// the end of the time loop (before the final checkpoint), and the particle-steps it made.
+struct RunTimes {
+  double wall = 0, setup = 0, loop_end = 0, particle_steps = 0;
+};
+
+template <int dim>
+void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
+                   const EnergyTotals& e0, const RunTimes& times, const RunResult& result, bool resumed);
+
+}  // namespace cdmpm

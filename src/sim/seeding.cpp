@@ -1,0 +1,153 @@
+// seeding.cpp - filling the bodies with particles (seeding.h).
+#include "sim/seeding.h"
+
+#include <cmath>
+
+#include "sim/rigid_bodies.h"
+
+namespace cdmpm {
+namespace {
+
+template <int dim>
+using DVec = Eigen::Matrix<double, dim, 1>;
+
+// A rigid body's shape turned by its tilt about its hinge (or centre).
+template <int dim>
+struct Tilted {
+  const Shape* shape;
+  Mat<dim> R;
+  Vec<dim> pivot;
+  explicit Tilted(const BodySpec& b) : shape(&b.shape), R(RigidAlgebra<dim>::tilt(b.tilt)) {
+    for (int a = 0; a < dim; ++a)
+      pivot[a] = static_cast<Real>(b.hinge.empty() ? 0.5 * (shape->lower(a) + shape->upper(a)) : b.hinge[a]);
+  }
+  bool contains(const DVec<dim>& x) const {
+    const Vec<dim> u = pivot + R.transpose() * (x.template cast<Real>() - pivot);
+    return shape->contains(u.template cast<double>());
+  }
+};
+
+// One body's seeding: which lattice points it fills, and the particle it puts at each.
+template <int dim>
+class BodySeeder {
+ public:
+  BodySeeder(const Scene& scene, const BodySpec& body, const std::vector<Material>& materials,
+             const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries)
+      : scene_(scene), body_(body), mat_(materials[body.material_index]), boundaries_(boundaries), self_(body) {
+    n_ = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
+    h_ = scene.domain.dx / n_;
+    if (!mat_.traits().rigid)
+      for (const BodySpec& b : scene.bodies)
+        if (materials[b.material_index].traits().rigid) rigid_shapes_.emplace_back(b);
+    for (int a = 0; a < dim; ++a) {
+      lo_[a] = static_cast<int>(std::floor(body.shape.lower(a) / h_ - 0.5));
+      hi_[a] = static_cast<int>(std::ceil(body.shape.upper(a) / h_ - 0.5));
+    }
+  }
+  double spacing() const { return h_; }
+
+  // Lattice columns along the vertical axis (the last), one at a time, so each column's top is known.
+  void seed(Particles<dim>& particles) const {
+    constexpr int up = vertical_axis<dim>;
+    IVec<dim> k = lo_;
+    std::vector<DVec<dim>> column;
+    while (true) {
+      column.clear();
+      for (k[up] = lo_[up]; k[up] <= hi_[up]; ++k[up]) {
+        DVec<dim> x;
+        for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h_;
+        if (filled(x)) column.push_back(x);
+      }
+      seed_column(column, particles);
+      int a = up - 1;
+      for (; a >= 0; --a) {
+        if (++k[a] <= hi_[a]) break;
+        k[a] = lo_[a];
+      }
+      if (a < 0) break;
+    }
+  }
+
+ private:
+  bool filled(const DVec<dim>& x) const {
+    if (!body_.shape.contains(x)) return false;
+    for (const auto& h : body_.holes)
+      if (h.contains(x)) return false;
+    for (const Tilted<dim>& t : rigid_shapes_)
+      if (t.contains(x)) return false;
+    const Vec<dim> xr = x.template cast<Real>();
+    for (const auto& b : boundaries_)
+      if (b->is_solid(xr)) return false;
+    return true;
+  }
+
+  // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level.
+  void seed_column(const std::vector<DVec<dim>>& column, Particles<dim>& particles) const {
+    constexpr int up = vertical_axis<dim>;
+    const double g = -static_cast<Real>(scene_.gravity[up]);
+    const bool loaded = body_.hydrostatic && g > 0;
+    const bool solid = mat_.traits().solid_state;
+    const double top = column.empty() ? 0 : column.back()[up] + 0.5 * h_;
+    const double surface = body_.surface_level ? *body_.surface_level : body_.shape.upper(up);
+    const double level = solid && !body_.surface_level ? top : surface;
+    const Real rho0 = mat_.density();
+    for (const auto& x : column) {
+      const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
+      const InitialState<dim> st =
+          mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0)); });
+      // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
+      const Real V0 = static_cast<Real>(std::pow(h_, dim)) / st.J;
+      Vec<dim> xp = x.template cast<Real>();
+      if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
+      const Vec<dim> vp = velocity_at(xp);
+      const MaterialId id = static_cast<MaterialId>(body_.material_index);
+      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, gradient(), st.F, st.alpha);
+      else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, gradient());
+    }
+  }
+
+  // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
+  Vec<dim> velocity_at(const Vec<dim>& x) const {
+    Vec<dim> v0 = Vec<dim>::Zero(), centre;
+    for (int a = 0; a < dim && !body_.velocity.empty(); ++a) v0[a] = static_cast<Real>(body_.velocity[a]);
+    for (int a = 0; a < dim; ++a) centre[a] = static_cast<Real>(0.5 * (body_.shape.lower(a) + body_.shape.upper(a)));
+    return v0 + gradient() * (x - centre);
+  }
+  Mat<dim> gradient() const {
+    Mat<dim> G = Mat<dim>::Zero();
+    if (!body_.velocity_gradient.empty())
+      for (int r = 0; r < dim; ++r)
+        for (int c = 0; c < dim; ++c) G(r, c) = static_cast<Real>(body_.velocity_gradient[r * dim + c]);
+    return G;
+  }
+
+  const Scene& scene_;
+  const BodySpec& body_;
+  const Material& mat_;
+  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries_;
+  Tilted<dim> self_;
+  std::vector<Tilted<dim>> rigid_shapes_;
+  int n_ = 1;
+  double h_ = 1;
+  IVec<dim> lo_, hi_;
+};
+
+}  // namespace
+
+template <int dim>
+void seed_bodies(const Scene& scene, std::vector<Material>& materials,
+                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles) {
+  for (const bool solids : {true, false})
+    for (const BodySpec& b : scene.bodies) {
+      Material& mat = materials[b.material_index];
+      if (mat.traits().solid_state != solids) continue;
+      const BodySeeder<dim> seeder(scene, b, materials, boundaries);
+      mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
+      seeder.seed(particles);
+    }
+}
+
+template void seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&, Particles<2>&);
+template void seed_bodies<3>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<3>>>&, Particles<3>&);
+
+}  // namespace cdmpm

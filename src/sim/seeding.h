@@ -1,0 +1,30 @@
+// seeding.h - the initial particles of a scene: every body's shape filled on a lattice, in its initial state.
+//
+// Particles sit on the lattice (k + 1/2) dx / n, n = ppc^(1/dim) per axis, so bodies that share a face tile
+// without gaps or overlaps. A lattice point is left empty if it lies in a hole of the body, inside a rigid
+// body (for the other bodies: a pool around a block) or inside the solid of any boundary (terrain, obstacles:
+// Boundary::is_solid). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
+// depth below the body's surface level, each material in its own initial state (InitialState of its model):
+//   fluids: pre-compressed to p = rho0 |g| d;
+//   solids: lithostatic uniaxial state sigma_v = -rho0 |g| d, sigma_h = 0 (a laterally free slab on a bed),
+//           d measured from the body's own top in each lattice column (unless surface_level is given).
+// The particle's current volume is (dx/n)^dim; its reference volume is that over J, its mass rho0 times that.
+// Solid-state bodies are seeded first, so that adding their particles is an append (core/particles.h).
+// Particles get consecutive ids in seeding order.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "boundary/boundary.h"
+#include "core/particles.h"
+#include "scene/scene.h"
+
+namespace cdmpm {
+
+// Seeds every body of the scene; sets each material's half particle spacing.
+template <int dim>
+void seed_bodies(const Scene& scene, std::vector<Material>& materials,
+                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles);
+
+}  // namespace cdmpm

@@ -1,0 +1,61 @@
+// test_seeding.cpp - seeding asks the boundaries what is solid (sim/seeding.h): a box of water over a sloping
+// bathymetry leaves the terrain empty (every lattice point below the profile, and only those, is left out), a
+// half-plane does the same, and a moving box obstacle (a grip) keeps the material seeded inside it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/scene_loader.h"
+#include "sim/simulation.h"
+
+namespace cdmpm {
+namespace {
+
+nlohmann::json pool(const nlohmann::json& boundary) {
+  return {{"dim", 2},
+          {"domain", {{"size", {10.0, 10.0}}, {"dx", 0.5}}},
+          {"time", {{"end", 0.1}, {"frame_interval", 0.1}}},
+          {"materials", {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1e6}}}}},
+          {"bodies", {{{"material", "water"}, {"particles_per_cell", 4},
+                       {"shape", {{"type", "box"}, {"min", {0.0, 0.0}}, {"max", {10.0, 6.0}}}}}}},
+          {"boundaries", {{{"type", "walls"}}, boundary}}};
+}
+
+// Lattice points (k + 1/2) h of the 10 x 6 box with h = 0.25 for which `solid` holds.
+template <class F>
+size_t lattice_count(F&& solid) {
+  size_t n = 0;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 24; ++j) n += !solid((i + 0.5) * 0.25, (j + 0.5) * 0.25);
+  return n;
+}
+
+TEST(Seeding, WaterOverSlopingBathymetryLeavesTheTerrainEmpty) {
+  // Bed rising from 1 m at x = 0 to 4 m at x = 10: h(x) = 1 + 0.3 x.
+  const Scene s = scene_from_json(pool({{"type", "bathymetry"}, {"points", {{0, 1}, {10, 4}}}}), "slope.json");
+  Simulation<2> sim(s);
+  for (size_t q = 0; q < sim.particles.size(); ++q) {
+    const auto& x = sim.particles.x[q];
+    ASSERT_GE(x[1], 1 + 0.3 * x[0]) << "particle " << q << " inside the terrain";
+  }
+  EXPECT_EQ(sim.particles.size(), lattice_count([](double x, double y) { return y < 1 + 0.3 * x; }));
+}
+
+TEST(Seeding, HalfPlaneLeavesItsSolidSideEmpty) {
+  // Solid where (x - (5, 0)) . (-1, 1)/sqrt(2) < 0, i.e. y < x - 5.
+  const Scene s = scene_from_json(pool({{"type", "half_plane"}, {"point", {5, 0}}, {"normal", {-1, 1}}}), "plane.json");
+  Simulation<2> sim(s);
+  EXPECT_EQ(sim.particles.size(), lattice_count([](double x, double y) { return y < x - 5; }));
+}
+
+TEST(Seeding, MovingBoxKeepsTheMaterialItGrips) {
+  nlohmann::json grip = {{"type", "box"}, {"condition", "sticky"}, {"min", {2, 2}}, {"max", {4, 4}}, {"velocity", {1, 0}}};
+  Simulation<2> moving(scene_from_json(pool(grip), "grip.json"));
+  EXPECT_EQ(moving.particles.size(), lattice_count([](double, double) { return false; }));
+  grip.erase("velocity");
+  Simulation<2> fixed(scene_from_json(pool(grip), "fixed.json"));
+  EXPECT_EQ(fixed.particles.size(), lattice_count([](double x, double y) { return x > 2 && x < 4 && y > 2 && y < 4; }));
+}
+
+}  // namespace
+}  // namespace cdmpm
