@@ -245,7 +245,11 @@ def main():
     ap.add_argument("new", help="new run folder, or folder of run folders")
     ap.add_argument("-v", "--verbose", action="store_true", help="also list every identical file and frame")
     ap.add_argument("--json", metavar="FILE", help="write per-run verdicts and counts to FILE")
+    ap.add_argument("--skip-summary", metavar="KEY[,KEY]", default="",
+                    help="also ignore these top-level summary.json keys, e.g. energy,energy_initial,mass_change across thread "
+                         "counts (their OpenMP reduction sums in another order)")
     args = ap.parse_args()
+    SUMMARY_SKIP.update(k for k in args.skip_summary.split(",") if k)
     for d in (args.ref, args.new):
         if not os.path.isdir(d):
             print(f"compare_runs: {d} is not a folder", file=sys.stderr)
