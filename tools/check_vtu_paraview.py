@@ -2,7 +2,9 @@
 points, each point array's type, components and range, the field data and the time ParaView reports, and
 whether every array equals what tools/vtu.py reads from the same file, bit for bit. Not part of the tests.
 
-    xvfb-run -a pvbatch tools/check_vtu_paraview.py FRAME.vtu...      (Debian's paraview has pvbatch, not pvpython)
+    xvfb-run -a pvpython tools/check_vtu_paraview.py FRAME.vtu...
+
+(Debian packages paraview, python3-paraview, which brings pvpython and the paraview module, and xvfb.)
 
 Exits 1 if ParaView and vtu.py disagree on any frame.
 """

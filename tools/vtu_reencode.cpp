@@ -2,6 +2,9 @@
 // zlib at several levels and block sizes, Float32 positions, 1 or more threads) and prints the bytes per
 // particle per frame and the write time per frame of each, to choose the frame output options.
 //   build/tests/vtu_reencode SCRATCH_DIR frame.vtu...     (target vtu_reencode, not built by default)
+//   build/tests/vtu_reencode --sample OUT.vtu TIME frame.vtu [MATERIAL_NAME...]
+//     writes one frame zlib-compressed with Float32 positions, an Int64 "id" field (2^32 + index), the
+//     TimeValue TIME and the material names as field data: a file to open in ParaView.
 #include <omp.h>
 
 #include <algorithm>
@@ -69,9 +72,23 @@ std::vector<Layout> layouts() {
           {"zlib 6, 64 KiB, Float32", z(6, 1u << 16, VtuReal::Float32), 1}};
 }
 
+int write_sample(int argc, char** argv) {
+  Frame f = load(argv[4]);
+  const size_t n = f.points.size() / 3;
+  VtuField id{"id", 1, {}, {}, {}};
+  for (size_t q = 0; q < n; ++q) id.i64.push_back((int64_t{1} << 32) + int64_t(q));
+  f.fields.push_back(std::move(id));
+  VtuOptions o;
+  o.compression = VtuCompression::ZLib, o.positions = VtuReal::Float32, o.time = std::stod(argv[3]);
+  o.metadata = {{kVtuMaterialNames, std::vector<std::string>(argv + 5, argv + argc)}};
+  write_vtu(argv[2], f.points, f.fields, o);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 5 && std::string(argv[1]) == "--sample") return write_sample(argc, argv);
   if (argc < 3) {
     std::fprintf(stderr, "usage: %s SCRATCH_DIR frame.vtu...\n", argv[0]);
     return 2;
