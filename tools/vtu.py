@@ -1,33 +1,78 @@
 """vtu.py - read cdmpm particle frames (VTK XML UnstructuredGrid, raw appended) into numpy arrays.
 
-    from vtu import read_vtu
+    from vtu import read_vtu, read_field_data
     points, fields = read_vtu("out/particles_0010.vtu")   # points: (n, 3); fields: name -> array
+    meta = read_field_data("out/particles_0010.vtu")      # e.g. {"TimeValue": array([2.]), "material_names": ["water", "ice"]}
     frames = read_pvd("out")                               # [(time, "particles_NNNN.vtu"), ...] in file order
+
+Reads appended data with header_type UInt64, uncompressed (a UInt64 byte count, then the values) or
+compressed with compressor="vtkZLibDataCompressor" (a UInt64 header [blocks, block size, size of a partial
+last block or 0, compressed size of each block], then one zlib stream per block); see the VTK file formats
+documentation, "XML File Formats". String arrays (FieldData) are NUL-terminated strings, one per tuple.
 """
 import os
 import re
+import zlib
+
 import numpy as np
 
-_TYPES = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8}
+_TYPES = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8,
+          "String": np.uint8}
 
 
-def read_vtu(path):
+def _decode(data, off, compressed):
+    """The uncompressed bytes of the appended array whose header starts at byte OFF of DATA."""
+    if not compressed:
+        nbytes = int(np.frombuffer(data, np.uint64, 1, off)[0])
+        return data[off + 8:off + 8 + nbytes]
+    nblocks, block, last = (int(v) for v in np.frombuffer(data, np.uint64, 3, off))
+    sizes = np.frombuffer(data, np.uint64, nblocks, off + 24).astype(np.int64)
+    at = off + 24 + 8 * nblocks
+    out = []
+    for b, size in enumerate(sizes):
+        raw = zlib.decompress(data[at:at + size])
+        expected = last if b == nblocks - 1 and last else block
+        if len(raw) != expected:
+            raise ValueError(f"zlib block {b} holds {len(raw)} bytes, expected {expected}")
+        out.append(raw)
+        at += size
+    return b"".join(out)
+
+
+def _sections(path):
+    """{section: {array name: array}} for the FieldData, PointData, Points and Cells sections of PATH."""
     data = open(path, "rb").read()
     start = data.index(b'<AppendedData encoding="raw">')
     base = data.index(b"_", start) + 1
     header = data[:start].decode()
-    arrays = {}
-    for m in re.finditer(r"<DataArray([^>]*)>", header):
-        attrs = dict(re.findall(r'(\w+)="([^"]*)"', m.group(1)))
-        off = base + int(attrs["offset"])
-        nbytes = int(np.frombuffer(data, np.uint64, 1, off)[0])
-        arr = np.frombuffer(data, _TYPES[attrs["type"]], nbytes // np.dtype(_TYPES[attrs["type"]]).itemsize, off + 8)
-        ncomp = int(attrs.get("NumberOfComponents", 1))
-        arrays[attrs.get("Name", "")] = arr.reshape(-1, ncomp) if ncomp > 1 else arr
-    points = arrays.pop("Points")
-    for k in ("connectivity", "offsets", "types"):
-        arrays.pop(k, None)
-    return points, arrays
+    root = re.search(r"<VTKFile([^>]*)>", header).group(1)
+    compressed = 'compressor="vtkZLibDataCompressor"' in root
+    if "compressor=" in root and not compressed:
+        raise ValueError(f"{path}: unsupported compressor")
+    out = {}
+    for sec in re.finditer(r"<(FieldData|PointData|Points|Cells)>(.*?)</\1>", header, re.S):
+        arrays = out.setdefault(sec.group(1), {})
+        for m in re.finditer(r"<DataArray([^>]*)>", sec.group(2)):
+            attrs = dict(re.findall(r'(\w+)="([^"]*)"', m.group(1)))
+            raw = _decode(data, base + int(attrs["offset"]), compressed)
+            if attrs["type"] == "String":
+                arrays[attrs["Name"]] = [s.decode() for s in raw.split(b"\0")[:-1]]
+                continue
+            arr = np.frombuffer(raw, _TYPES[attrs["type"]])
+            ncomp = int(attrs.get("NumberOfComponents", 1))
+            arrays[attrs.get("Name", "")] = arr.reshape(-1, ncomp) if ncomp > 1 else arr
+    return out
+
+
+def read_vtu(path):
+    """(points (n, 3), {point-data name: array}) of the frame at PATH."""
+    sec = _sections(path)
+    return sec["Points"]["Points"], sec.get("PointData", {})
+
+
+def read_field_data(path):
+    """{name: numpy array, or list of str for String arrays} of the frame's FieldData ({} without one)."""
+    return _sections(path).get("FieldData", {})
 
 
 def read_pvd(out):
