@@ -10,6 +10,7 @@
 #include "material/cohesive_cam_clay.h"
 #include "material/neo_hookean_split.h"
 #include "scene/parameters.h"
+#include "terrain/terrain_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -405,8 +406,8 @@ class Loader {
     Strings extra = spec.type == "walls"        ? Strings{"faces"}
                     : spec.type == "half_plane" ? Strings{"point", "normal"}
                     : spec.type == "box"        ? Strings{"min", "max", "velocity", "ramp_time"}
-                    : dim_ == 2                 ? Strings{"points"}
-                                                : Strings{"origin", "spacing", "heights"};
+                    : dim_ == 2                 ? Strings{"points", "file", "file_origin"}
+                                                : Strings{"origin", "spacing", "heights", "file", "file_origin"};
     keys.insert(keys.end(), extra.begin(), extra.end());
     object(n, keys);
     std::string condition = n.has("condition") ? string(n["condition"], {"sticky", "slip", "separate"}) : "separate";
@@ -437,6 +438,11 @@ class Loader {
       min_max(n, spec.min, spec.max);
       spec.velocity = n.has("velocity") ? numbers(n["velocity"], dim_) : std::vector<double>(dim_, 0.0);
       spec.ramp_time = number(n, "ramp_time", ge(0), 0.0);
+    } else if (n.has("file") || n.has("file_origin")) {  // terrain from a file (src/terrain/terrain_file.h)
+      for (const char* key : {"points", "origin", "spacing", "heights"})
+        if (n.has(key)) fail(n.child(key), "not allowed together with \"file\" (give one or the other)");
+      const auto o = n.has("file_origin") ? numbers(n["file_origin"], dim_) : std::vector<double>(dim_, 0.0);
+      bathymetry_from_file(spec, terrain_path(file_, string(required(n, "file"))), o, s_.domain.size, file_ + ": " + n.child("file"));
     } else if (dim_ == 2) {
       Node points = required(n, "points");
       spec.points = pairs(points, 2);
