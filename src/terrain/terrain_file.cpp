@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <string_view>
@@ -23,7 +24,7 @@ using Tokens = std::vector<std::string_view>;
 
 std::string fmt(double v) {
   std::ostringstream s;
-  s << v;
+  s << std::setprecision(12) << v;
   return s.str();
 }
 
