@@ -131,6 +131,26 @@ TEST(TerrainFile, SceneWithFileAndInlinePointsIsRefused) {
             std::string::npos) << msg;
 }
 
+// scenes/data/eqip_sermia_profile.csv keeps the published numbers (docs/eqip_sermia.md): the front in 100 m
+// of water, depths 35-135 m up to the slope of the opposite shore, the shoreline at 4000 m, the shore up to +60 m.
+TEST(TerrainFile, EqipSermiaProfileKeepsThePublishedNumbers) {
+  const TerrainProfile p = read_profile_csv(source_path("scenes/data/eqip_sermia_profile.csv"));
+  double deepest = 0, shallowest = 1e9, top = -1e9;
+  for (const auto& [x, z] : p.points) {
+    if (x == 0) {
+      EXPECT_EQ(z, -100);
+    }
+    if (x >= 0 && x <= 3850) deepest = std::max(deepest, -z), shallowest = std::min(shallowest, -z);
+    if (x == 4000) {
+      EXPECT_EQ(z, 0);
+    }
+    top = std::max(top, z);
+  }
+  EXPECT_EQ(deepest, 135);
+  EXPECT_EQ(shallowest, 35);
+  EXPECT_EQ(top, 60);
+}
+
 TEST(TerrainCli, BadTerrainFileExitsWithCode2NamingFileAndLineAndWritesNothing) {
   TempDir dir;
   const std::string scene = terrain_dir("scene_bad_profile_2d.json");
