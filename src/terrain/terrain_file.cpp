@@ -347,7 +347,10 @@ void fill_from_grid(BoundarySpec& spec, const TerrainGrid& g, const std::vector<
 void bathymetry_from_file(BoundarySpec& spec, const std::string& path, const std::vector<double>& file_origin,
                           const std::vector<double>& domain_size, const std::string& context) {
   const auto& o = file_origin;
+  const std::string ext = lower(std::filesystem::path(path).extension().string());
   try {
+    if (domain_size.size() == 2 && ext == ".asc") fail(path, 0, "a CSV profile in a 2D scene", "an .asc grid (3D)");
+    if (domain_size.size() == 3 && ext == ".csv") fail(path, 0, "an .asc grid in a 3D scene", "a .csv profile (2D)");
     if (domain_size.size() == 2) {
       const TerrainProfile p = read_profile_csv(path);
       check_covers(p, o[0], domain_size[0]);

@@ -114,6 +114,14 @@ TEST(TerrainFile, MissingFileDirectoryAndOverlongLineAreRefused) {
   EXPECT_EQ(msg, dir / "long.csv" + ":3: expected a line of at most 16777216 characters, got a longer line");
 }
 
+TEST(TerrainFile, AGridIn2DOrAProfileIn3DIsRefused) {
+  BoundarySpec spec;
+  std::string msg = error_of([&] { bathymetry_from_file(spec, terrain_dir("grid_corner.asc"), {0, 0}, {300, 100}); });
+  EXPECT_EQ(msg, terrain_dir("grid_corner.asc") + ": expected a CSV profile in a 2D scene, got an .asc grid (3D)");
+  msg = error_of([&] { bathymetry_from_file(spec, terrain_dir("profile.csv"), {0, 0, 0}, {300, 100, 100}); });
+  EXPECT_EQ(msg, terrain_dir("profile.csv") + ": expected an .asc grid in a 3D scene, got a .csv profile (2D)");
+}
+
 TEST(TerrainFile, SceneLoaderReadsTheFileRelativeToTheScene) {
   const Scene s2 = load_scene(terrain_dir("scene_2d.json"));
   ASSERT_EQ(s2.boundaries.size(), 2u);
