@@ -442,7 +442,8 @@ class Loader {
       for (const char* key : {"points", "origin", "spacing", "heights"})
         if (n.has(key)) fail(n.child(key), "not allowed together with \"file\" (give one or the other)");
       const auto o = n.has("file_origin") ? numbers(n["file_origin"], dim_) : std::vector<double>(dim_, 0.0);
-      bathymetry_from_file(spec, terrain_path(file_, string(required(n, "file"))), o, s_.domain.size, file_ + ": " + n.child("file"));
+      bathymetry_from_file(spec, terrain_path(file_, string(required(n, "file"))), o, s_.domain.size,
+                           file_ + ": " + n.child("file"));
     } else if (dim_ == 2) {
       Node points = required(n, "points");
       spec.points = pairs(points, 2);

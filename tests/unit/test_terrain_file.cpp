@@ -68,8 +68,10 @@ TEST(TerrainFile, FillsAProfileShiftedByTheFileOrigin) {
   ASSERT_EQ(spec.points.size(), 3u);
   EXPECT_EQ(spec.points[1], (std::array<double, 2>{400, 29.5}));
   // The domain's x = 0 at distance 100 in the file: the profile must reach 1100, it stops at 1000.
-  const std::string msg = error_of([&] { bathymetry_from_file(spec, terrain_dir("profile.csv"), {100, 0}, {1000, 200}); });
-  EXPECT_NE(msg.find("profile.csv:8: expected a profile spanning the domain, distance [100, 1100]"), std::string::npos) << msg;
+  const std::string msg =
+      error_of([&] { bathymetry_from_file(spec, terrain_dir("profile.csv"), {100, 0}, {1000, 200}); });
+  EXPECT_NE(msg.find("profile.csv:8: expected a profile spanning the domain, distance [100, 1100]"), std::string::npos)
+      << msg;
 }
 
 TEST(TerrainFile, FillsAGridShiftedByTheFileOriginAndCroppedToTheDomain) {
@@ -93,7 +95,8 @@ TEST(TerrainFile, BadFilesAreRefusedNamingTheFileAndLine) {
     const bool grid = file.ends_with(".asc");
     const std::vector<double> domain = grid ? std::vector<double>{300, 200, 100} : std::vector<double>{1000, 200};
     BoundarySpec spec;
-    const std::string msg = error_of([&] { bathymetry_from_file(spec, path, std::vector<double>(domain.size(), 0.0), domain); });
+    const std::vector<double> origin(domain.size(), 0.0);
+    const std::string msg = error_of([&] { bathymetry_from_file(spec, path, origin, domain); });
     const std::string where = path + ":" + std::to_string(want["line"].get<int>()) + ": ";
     EXPECT_EQ(msg.rfind(where, 0), 0u) << file << ": expected to start with " << where << ", got: " << msg;
     EXPECT_NE(msg.find(want["message"].get<std::string>()), std::string::npos) << file << ": " << msg;
