@@ -1,22 +1,44 @@
 // bathymetry.cpp - the "bathymetry" boundary: terrain below which all is solid, with the normal of the terrain.
 // 2D: a piecewise-linear profile through points (x_k, h_k) (x strictly increasing), constant beyond its ends.
 // 3D: a height field heights[j][i] at (origin[0] + i spacing[0], origin[1] + j spacing[1]), bilinearly
-// interpolated and clamped at its edges. Scene keys: 2D points; 3D origin, spacing, heights.
+// interpolated and clamped at its edges. Scene keys: 2D points; 3D origin, spacing, heights; or, instead, "file"
+// (a CSV profile in 2D, an ESRI ASCII grid in 3D, relative to the scene file; terrain/terrain_file.h) and
+// "file_origin" (the point of the file that becomes the domain's origin, default zeros).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "boundary/mirror.h"
+#include "terrain/terrain_file.h"
 
 namespace cdmpm {
 namespace {
+
+// The terrain of a bathymetry given as a file ("file", "file_origin"), or nothing if it is given inline; the
+// inline keys are refused beside "file".
+std::optional<TerrainSurface> terrain_of(const SceneReader& r, const Node& n) {
+  if (!n.has("file") && !n.has("file_origin")) return std::nullopt;
+  for (const char* key : {"points", "origin", "spacing", "heights"})
+    if (n.has(key)) r.fail(n.child(key), "not allowed together with \"file\" (give one or the other)");
+  const int dim = r.dim();
+  const auto o = n.has("file_origin") ? r.numbers(n["file_origin"], dim) : std::vector<double>(dim, 0.0);
+  TerrainSurface t;
+  bathymetry_from_file(t, terrain_path(r.file(), r.string(r.required(n, "file"))), o, r.domain(),
+                       r.file() + ": " + n.child("file"));
+  return t;
+}
 
 // 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
 class Bathymetry2D final : public Boundary<2> {
  public:
   Bathymetry2D(const SceneReader& r, const Node& n, Real dx) : Boundary<2>(r, n, dx) {
     Strings keys = Boundary<2>::common_keys();
-    keys.push_back("points");
+    keys.insert(keys.end(), {"points", "file", "file_origin"});
     r.object(n, keys);
+    if (const auto t = terrain_of(r, n)) {
+      pts_ = t->points;
+      return;
+    }
     Node points = r.required(n, "points");
     pts_ = r.pairs(points, 2);
     for (size_t i = 1; i < pts_.size(); ++i)
@@ -58,8 +80,13 @@ class HeightField3D final : public Boundary<3> {
  public:
   HeightField3D(const SceneReader& r, const Node& n, Real dx) : Boundary<3>(r, n, dx) {
     Strings keys = Boundary<3>::common_keys();
-    keys.insert(keys.end(), {"origin", "spacing", "heights"});
+    keys.insert(keys.end(), {"origin", "spacing", "heights", "file", "file_origin"});
     r.object(n, keys);
+    if (const auto t = terrain_of(r, n)) {
+      ox_ = t->origin[0], oy_ = t->origin[1], sx_ = t->spacing[0], sy_ = t->spacing[1];
+      h_ = t->heights;
+      return;
+    }
     const std::vector<double> origin = r.numbers(r.required(n, "origin"), 2);
     const std::vector<double> spacing = r.numbers(r.required(n, "spacing"), 2, gt(0));
     ox_ = origin[0], oy_ = origin[1], sx_ = spacing[0], sy_ = spacing[1];

@@ -41,6 +41,9 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
   VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
   VtuField J{"J", 1, std::vector<float>(n), {}, {}};
   VtuField stress{"stress", 9, std::vector<float>(9 * n, 0.f), {}, {}};
+  VtuField id{"id", 1, {}, {}, {}, std::vector<int64_t>(P.id.begin(), P.id.end())};
+  VtuField mass{"mass", 1, std::vector<float>(n), {}, {}};
+  VtuField volume{"volume", 1, std::vector<float>(n), {}, {}};
   const ExtraFields extra(sim.materials);
   std::vector<VtuField> more;
   for (const std::string& name : extra.names) more.push_back({name, 1, std::vector<float>(n, 0.f), {}, {}});
@@ -53,6 +56,8 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     }
     pres.f32[q] = static_cast<float>(particle_pressure(m, P, q));
     J.f32[q] = static_cast<float>(P.J[q]);
+    mass.f32[q] = static_cast<float>(P.mass[q]);
+    volume.f32[q] = static_cast<float>(reference_volume(m, P.mass[q]) * P.J[q]);
     const Mat<dim> sigma = cauchy_stress(m, P, q);
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) stress.f32[9 * q + 3 * a + b] = static_cast<float>(sigma(a, b));
@@ -62,9 +67,16 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     m.visit([&](const auto& model) { model.template fields<dim>(P, q, values); });
     for (size_t k = 0; k < cols.size(); ++k) more[cols[k]].f32[q] = values[k];
   }
-  std::vector<VtuField> fields = {vel, mat, pres, J, stress};
+  std::vector<VtuField> fields = {vel, mat, pres, J, stress, id, mass, volume};
   fields.insert(fields.end(), more.begin(), more.end());
-  write_vtu(path, pts, fields);
+  VtuOptions options;
+  options.compression = sim.scene.output.compress ? VtuCompression::ZLib : VtuCompression::None;
+  options.positions = sim.scene.output.float32_positions ? VtuReal::Float32 : VtuReal::Float64;
+  options.time = sim.time();
+  VtuStrings names{kVtuMaterialNames, {}};
+  for (const Material& mt : sim.materials) names.values.push_back(mt.name);
+  options.metadata = {names};
+  write_vtu(path, pts, fields, options);
 }
 
 template void write_frame<2>(const std::string&, const Simulation<2>&);

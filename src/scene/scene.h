@@ -81,6 +81,8 @@ struct ProbeSpec {
 
 struct OutputSpec {
   bool frames = true;          // write particles_NNNN.vtu and particles.pvd
+  bool compress = true;        // zlib-compressed frame data (io/vtu_writer.h); false: raw
+  bool float32_positions = false;  // frame positions in single precision (large 3D runs)
   int checkpoint_every = 0;    // checkpoint every N frames (0 = only at the end of the run)
   double probe_interval = 0;   // probes.csv sampling interval [s]; 0 = every frame interval / 10
   // icebergs.csv (written when the scene has ice): connected bodies of intact ice (probe/icebergs.h)

@@ -201,8 +201,10 @@ class Loader {
   }
 
   void output(const Node& o) {
-    r_.object(o, {"frames", "checkpoint_every", "icebergs"});
+    r_.object(o, {"frames", "compress", "positions", "checkpoint_every", "icebergs"});
     s_.output.frames = r_.boolean(o, "frames", true);
+    s_.output.compress = r_.boolean(o, "compress", true);
+    s_.output.float32_positions = o.has("positions") && r_.string(o["positions"], {"float64", "float32"}) == "float32";
     s_.output.checkpoint_every = o.has("checkpoint_every") ? r_.integer(o["checkpoint_every"], ge(0)) : 0;
     if (!o.has("icebergs")) return;
     Node ib = o["icebergs"];

@@ -8,6 +8,7 @@
 // inverted to the same relative precision (water), and the frame stores float32 (relative 2^-24).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -64,6 +65,33 @@ TEST(Frames, StressTensorIsTheSeededEquilibriumState) {
   }
   EXPECT_GT(n_ice, 100u);
   EXPECT_GT(n_water, 100u);
+}
+
+// Frames carry what a user needs to trace and weigh particles: ids 0 .. n-1 at seeding (each once), the mass and
+// the current volume (at seeding every particle occupies (dx/2)^2, 4 particles per cell) and the frame's time.
+// Tolerance: float32 storage, relative 2^-23.
+TEST(Frames, CarryIdsMassVolumeAndTime) {
+  TempDir dir;
+  const auto r = run_cdmpm({"run", source_path("scenes/calving_front_2d.json"), "--out", dir / "out", "--quiet",
+                            "--set", "parameters.dx=10", "--set", "time.end=0.01", "--set", "time.frame_interval=0.01"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const ParsedVtu first(dir / "out/particles_0000.vtu");
+  EXPECT_TRUE(first.compressed);
+  const size_t n = first.points();
+  std::vector<int64_t> ids = first.array<int64_t>("id", n);
+  std::sort(ids.begin(), ids.end());
+  for (size_t q = 0; q < n; ++q) ASSERT_EQ(ids[q], int64_t(q));
+  const auto volume = first.array<float>("volume", n);
+  for (size_t q = 0; q < n; ++q) ASSERT_NEAR(volume[q], 25.0, 25.0 * std::ldexp(1.0, -23)) << "particle " << q;
+  EXPECT_EQ(first.array<double>("TimeValue", 1)[0], 0.0);
+  // A particle keeps its mass, found by its id whatever the particles' order in the later frame.
+  const ParsedVtu last(dir / "out/particles_0001.vtu");
+  EXPECT_EQ(last.array<double>("TimeValue", 1)[0], 0.01);
+  std::vector<float> mass_by_id(n), later_by_id(n);
+  const auto id0 = first.array<int64_t>("id", n), id1 = last.array<int64_t>("id", n);
+  const auto m0 = first.array<float>("mass", n), m1 = last.array<float>("mass", n);
+  for (size_t q = 0; q < n; ++q) mass_by_id[id0[q]] = m0[q], later_by_id[id1[q]] = m1[q];
+  EXPECT_EQ(mass_by_id, later_by_id);
 }
 
 }  // namespace
