@@ -13,13 +13,18 @@
 // so each particle is given a distinct mass (m_p (1 + 1e-3 q / n)); a step never changes a mass, and a
 // permutation moves it bitwise, so the mass identifies the particle in both runs.
 //
+// Each step is compared from identical inputs: before every engine step the reference copies the engine's
+// particles and makes the same step (so the comparison is of the two step maps; through the dynamics round-off
+// would grow, and the strain softening of the ice amplifies it by up to ~ 3 kappa cosh(xi alpha) / mu per
+// yielding step, since p0(alpha) falls as alpha grows, material/cohesive_cam_clay.h).
+//
 // Tolerance: both steps evaluate the same sums in different orders (per block and colour, per axis
 // partial sums in the patches, 4-wide records), so they differ by round-off only. Each grid or particle
 // value is a sum of at most 3^dim x (particles per cell) x 3^dim terms (<= 8 x 729 in 3D), each bounded by
 // the field's scale S (below), so reordering changes it by at most about (terms) eps S in the worst case and
-// by sqrt(terms) eps S typically; the step is Lipschitz with a constant of order 1 at the CFL time step, so
-// ten steps add up to ~10 sqrt(terms) eps S ~ 1e-14 S. The bound 4096 eps S (9e-13 S in double) leaves
-// that margin, while any wrong factor in a formula changes the result by far more than 1e-12 of its scale.
+// by sqrt(terms) eps S ~ 1e-14 S typically; the constitutive update and return mapping are Lipschitz with a
+// constant of order 1 in their inputs. The bound 4096 eps S (9e-13 S in double) leaves that margin, while any
+// wrong factor in a formula changes the result by far more than 1e-12 of its scale.
 // The scales S: positions, max |x_p|; velocities, max |v_p| plus the largest stress impulse per unit mass
 // 4 dt |tau_p| / (rho0 dx) (the p2g term m_p v_p and the force term dt V0 D^-1 tau_p (x_i - x_p) enter the
 // same sum) plus |g| dt; C (a difference quotient of v over dx), D^-1 dx = 4 / dx times the velocity scale;
@@ -74,8 +79,8 @@ nlohmann::json water_scene(int dim, double dx) {
   return j;
 }
 
-// Ice (E = 1e5 Pa, nu = 0.3; Cam-Clay M = 1.85, beta = 0.3, xi = 3, p0 = 600 Pa): a slab 0.4 wide and
-// 0.25 high under its lithostatic stress (up to rho g h = 2.2 kPa, beyond the strength at its base), sheared.
+// Ice (E = 1e5 Pa, nu = 0.3; Cam-Clay M = 1.85, beta = 0.3, xi = 3, p0 = 1500 Pa): a slab 0.4 wide and
+// 0.25 high under its lithostatic stress (up to rho g h = 2.2 kPa), sheared and stretched: part of it yields.
 nlohmann::json ice_scene(int dim, double dx) {
   nlohmann::json j = base_scene(dim, dx);
   j["materials"] = {{"ice", {{"type", "ice"}, {"density", 900}, {"youngs_modulus", 1e5}, {"poissons_ratio", 0.3},
@@ -177,10 +182,8 @@ void expect_same_state(const Particles<dim>& p, const Particles<dim>& ref, const
                                       << w.scale;
 }
 
-// Runs `steps` engine steps; before each, the reference takes the engine's state and makes the same step.
-// Comparing one step at a time from identical inputs compares the two implementations of the step map, not
-// the growth of round-off through the dynamics (which strain softening of the ice amplifies by a factor
-// ~ 3 kappa cosh(xi alpha) / mu per yielding step: p0(alpha) falls as alpha grows, cohesive_cam_clay.h).
+// Runs `steps` engine steps; before each, the reference takes the engine's state and makes the same step
+// (see the header).
 template <int dim>
 void compare_with_reference(const nlohmann::json& j, int steps, bool ice) {
   const Scene scene = scene_from_json(j, "reference.json");
