@@ -31,7 +31,10 @@ import subprocess
 import sys
 from pathlib import Path
 
-import numpy as np
+try:
+    import numpy as np
+except ImportError:
+    sys.exit("validate_dam_break: needs numpy (and matplotlib for the plot), e.g. /usr/bin/python3 with python3-numpy")
 
 REPO = Path(__file__).resolve().parent.parent
 SCENE = REPO / "scenes" / "dam_break_2d.json"
@@ -50,9 +53,9 @@ def parse_args():
     p.add_argument("--out", default="output/dam_break_validation", help="output directory")
     p.add_argument("--no-run", action="store_true", help="do not run cdmpm; analyse the finished runs in --out")
     p.add_argument("--threads", type=int, help="OpenMP threads for cdmpm (default: all cores)")
-    p.add_argument("--data", default=str(REPO.parent / "shared" / "data" / "dam_break_martin_moyce.csv"),
-                   help="experimental data, CSV with columns T,Z (default: ../shared/data/"
-                   "dam_break_martin_moyce.csv from the repository root)")
+    p.add_argument("--data", default=str(REPO / "tests" / "data" / "dam_break_martin_moyce.csv"),
+                   help="experimental data, CSV with columns T,Z (default: tests/data/"
+                   "dam_break_martin_moyce.csv)")
     p.add_argument("--png", help="plot file (default: OUT/dam_break_front.png)")
     p.add_argument("--tolerance", type=float, default=0.10,
                    help="allowed max |relative error| over 1 <= T <= 3.5 (default: 0.10)")
@@ -166,6 +169,12 @@ def main():
     resolutions = sorted(set(args.dx_per_a))
     if any(n <= 0 for n in resolutions):
         fail("--dx-per-a values must be positive")
+    needed = [(Path(args.data), "experimental data (--data)")]
+    if not args.no_run:
+        needed += [(SCENE, "scene"), (exe, "cdmpm executable (--cdmpm; build it first)")]
+    for path, what in needed:
+        if not path.is_file():
+            fail(f"missing {what}: {path}")
     exp = read_csv(args.data)
     T_exp, Z_exp = exp["T"], exp["Z"]
 

@@ -65,9 +65,12 @@ TEST(Calving3D, SmallSettingRunsTwentyStepsAndReportsMemory) {
   EXPECT_EQ(s["steps"], 20);
   EXPECT_NE(s["reason"].get<std::string>().find("--steps"), std::string::npos) << s["reason"];
   EXPECT_LT(std::abs(s["mass_change"].get<double>()), 1e-12);
-  EXPECT_GT(s["peak_memory_bytes"].get<double>(), 0);
-  EXPECT_GT(s["bytes_per_particle"].get<double>(), 0);
-  EXPECT_GT(s["stepping_particle_steps_per_second"].get<double>(), 0);
+  // The peak resident memory holds at least every particle's own arrays (core/particles.h: x, v, C, mass, J,
+  // material; F and alpha of the ice), so per particle it is at least the fluids' share.
+  EXPECT_GE(s["bytes_per_particle"].get<double>(),
+            2 * sizeof(Vec<3>) + sizeof(Mat<3>) + 2 * sizeof(Real) + sizeof(MaterialId));
+  // The stepping loop is part of the run's wall time, so its rate is at least the whole run's.
+  EXPECT_GE(s["stepping_particle_steps_per_second"].get<double>(), s["particle_steps_per_second"].get<double>());
 }
 
 }  // namespace
