@@ -2,7 +2,7 @@
 # install_deps.sh - installs the Debian packages cdmpm needs to build, test and post-process, if missing.
 # Needs root (or sudo) and apt; does nothing when everything is already installed.
 set -euo pipefail
-pkgs=(build-essential cmake libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
+pkgs=(build-essential cmake libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev zlib1g-dev
       python3-numpy python3-matplotlib)
 missing=()
 for p in "${pkgs[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

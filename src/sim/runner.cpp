@@ -16,6 +16,8 @@
 #include <sstream>
 
 #include "io/checkpoint.h"
+#include "io/checkpoint_format.h"
+#include "io/scene_fingerprint.h"
 #include "io/process_memory.h"
 #include "io/vtu_writer.h"
 #include "material/stress.h"
@@ -23,6 +25,8 @@
 #include "probe/iceberg_tracker.h"
 #include "probe/probes.h"
 #include "probe/wave_report.h"
+#include "sim/interrupt.h"
+#include "sim/output_dir.h"
 #include "sim/simulation.h"
 
 namespace cdmpm {
@@ -121,6 +125,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
   if (opt.resume) {
     const size_t seeded = sim.particles.size(), seeded_solids = sim.particles.solid_count();
     meta = read_checkpoint(ckpt, sim.particles);
+    validate_checkpoint(ckpt, meta, sim.particles, scene);
     // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
     const bool fewer_allowed = !scene.sinks.empty();
     const bool fits = fewer_allowed ? sim.particles.size() <= seeded && sim.particles.solid_count() <= seeded_solids
@@ -140,16 +145,16 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     if (!sim.rigid.load(meta.rigid_bodies))
       throw std::runtime_error(ckpt + ": checkpoint holds the state of another set of rigid bodies than the scene's");
     const fs::path csv_path = out / "probes.csv";
-    if (fs::exists(csv_path)) fs::resize_file(csv_path, meta.probes_csv_bytes);
+    restore_output_size(csv_path, meta.probes_csv_bytes);
     csv.open(csv_path, std::ios::app);
     icebergs.first_ = meta.first_iceberg;
     if (icebergs.active()) {
       const fs::path berg_path = out / "icebergs.csv";
-      if (fs::exists(berg_path)) fs::resize_file(berg_path, meta.icebergs_csv_bytes);
+      restore_output_size(berg_path, meta.icebergs_csv_bytes);
       berg_csv.open(berg_path, std::ios::app);
     }
   } else {
-    fs::create_directories(out);
+    prepare_output_dir(out);
     csv.open(out / "probes.csv", std::ios::trunc);
     if (icebergs.active()) {
       berg_csv.open(out / "icebergs.csv", std::ios::trunc);
@@ -157,6 +162,7 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
     }
     meta.wave_dt_at_start = sim.wave_dt_at_start;
     meta.still_levels = probes.still_levels;
+    meta.scene_fingerprint = scene_fingerprint(scene);
   }
   if (!csv) throw std::runtime_error((out / "probes.csv").string() + ": cannot write");
   if (icebergs.active() && !berg_csv) throw std::runtime_error((out / "icebergs.csv").string() + ": cannot write");
@@ -254,15 +260,19 @@ RunResult run_dim(const Scene& scene, const RunOptions& opt) {
       result.reason = "stopped after " + std::to_string(opt.max_steps) + " steps (--steps)";
       break;
     }
+    if (const int sig = interrupt_signal()) {
+      result = {"interrupted", std::string("stopped by ") + interrupt_signal_name(sig), 128 + sig};
+      break;
+    }
     if (opt.progress && Clock::now() - last_progress > std::chrono::seconds(2)) {
       progress_line(false);
       last_progress = Clock::now();
     }
   }
   const double loop_end_wall = elapsed();  // before the final checkpoint, which can take long on a big scene
-  if (result.status == "completed") checkpoint();
+  if (result.status != "unstable") checkpoint();
   if (opt.progress) progress_line(true);
-  if (result.status != "completed") std::cerr << "cdmpm: run unstable: " << result.reason << "\n";
+  if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
 
   const EnergyTotals e1 = energy_totals(sim.particles, sim.materials, sim.gravity);
   const double wall = elapsed();
