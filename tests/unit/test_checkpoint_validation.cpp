@@ -133,7 +133,7 @@ TEST_F(CheckpointValidation, FingerprintIgnoresOnlyTheResumableKeys) {
             "");
   EXPECT_EQ(fingerprint_difference(a, scene_fingerprint(load_scene(kScene, {"materials.water.density=500"}))),
             "materials.water differs");
-  EXPECT_EQ(fingerprint_difference(a, scene_fingerprint(load_scene(kScene, {"time.cfl=0.3"}))), "time differs");
+  EXPECT_EQ(fingerprint_difference(a, scene_fingerprint(load_scene(kScene, {"time.cfl=0.3"}))), "time.cfl differs");
 }
 
 TEST_F(CheckpointValidation, ProgramRefusesCorruptCheckpointsAndAnotherScene) {

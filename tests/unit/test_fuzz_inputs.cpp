@@ -11,10 +11,12 @@
 //   6. extreme numbers: -1, 0, 1e308, -1e308, 1e-300, 5e-324 in place of a number             -> exit 0 or 2
 //   7. random byte flips (1 .. 8 bytes) and truncations of the scene text                     -> exit 0 or 2
 //   8. hostile --set: deep nesting, missing or huge path components, 1e999, expressions nested
-//      40,000 levels, unknown functions, circular parameters, a 1 MB string                   -> exit 2
+//      40,000 levels, unknown functions, circular parameters, 100 kB strings (an argument of a command
+//      line is at most 128 kB)                                                                -> exit 2
 //   9. corrupted checkpoints: byte flips, truncations, forged length fields and forged values
 //      (NaN/far positions, material ids, masses, J, time) with a recomputed CRC              -> exit 2
-// Exit 0 is allowed only for classes 6 and 7, where a mutation can leave a valid scene.
+// Exit 0 is allowed only for classes 6 and 7, where a mutation can leave a valid scene, and for forged
+// checkpoint doubles that stay finite (a velocity of 1e299 loads; the run then goes unstable: exit 3).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -52,15 +54,17 @@ void expect_outcome(const Outcome& o, std::initializer_list<int> allowed, const 
   EXPECT_TRUE(std::find(allowed.begin(), allowed.end(), o.code) != allowed.end())
       << what << ": exit " << o.code << (o.code >= 124 ? " (signal or timeout)" : "") << ": "
       << o.output.substr(0, 400);
+  const bool message = o.output.find("error") != std::string::npos || o.output.find("unstable") != std::string::npos;
   if (o.code != 0) {
-    EXPECT_NE(o.output.find("error"), std::string::npos) << what << ": " << o.output.substr(0, 400);
+    EXPECT_TRUE(message) << what << ": " << o.output.substr(0, 400);
   }
 }
 
 // JSON pointers of every leaf value of `j` (not inside "parameters", whose new keys would be new parameters).
 std::vector<json::json_pointer> leaves(const json& j) {
   std::vector<json::json_pointer> out;
-  for (const auto& [path, v] : j.flatten().items())
+  const json flat = j.flatten();
+  for (const auto& [path, v] : flat.items())
     if (path.rfind("/parameters", 0) != 0) out.emplace_back(path);
   return out;
 }
@@ -176,15 +180,16 @@ TEST_F(FuzzInputs, HostileSetValues) {
   std::string chain = "1";
   for (int i = 0; i < 20000; ++i) chain += "^1";
   std::vector<std::string> sets = {
-      "gravity=" + nested(30000), "time=" + nested(300), "materials.water=" + nested(1000),
-      "time.end=1e999", "time.end=NaN", "time.end=-1e999", "domain.dx=[" + std::string(300000, '1') + "]",
+      "gravity=" + std::string(30000, '[') + std::string(30000, ']'), "time=" + nested(300),
+      "materials.water=" + nested(1000),
+      "time.end=1e999", "time.end=NaN", "time.end=-1e999", "domain.dx=[" + std::string(100000, '1') + "]",
       "parameters.H== " + std::string(40000, '(') + "1" + std::string(40000, ')'),
       "parameters.H== " + std::string(40000, '-') + "1", "parameters.H== " + chain,
       "parameters.H== nosuch(1)", "parameters.H== H", "parameters.H==", "parameters.H== 1/0",
       "nosuch.key=1", "bodies.999999999.material=ice", "bodies.99999999999999999999.x=1", "bodies.x=1",
       ".=1", "a..b=1", "=1", "time.end", "time.end.x=1", "name=../../x", "name=/tmp/x",
-      "name=" + std::string(100000, 'n'), "materials.water.density=" + std::string(1 << 20, '7'),
-      "materials.water.density=\"" + std::string(1 << 20, 'x') + "\"",
+      "name=" + std::string(100000, 'n'), "materials.water.density=" + std::string(100000, '7'),
+      "materials.water.density=\"" + std::string(100000, 'x') + "\"",
       "time.frame_interval=" + std::string(5000, '['),
   };
   std::string long_path;

@@ -25,7 +25,7 @@ std::string scene_with(const std::string& key, const std::string& value) {
 }
 
 TEST(InputLimits, NestingDepthIgnoresBracketsInStrings) {
-  EXPECT_EQ(json_nesting_depth("{\"a\": [1, {\"b\": []}]}"), 3u);
+  EXPECT_EQ(json_nesting_depth("{\"a\": [1, {\"b\": []}]}"), 4u);
   EXPECT_EQ(json_nesting_depth("[\"[[[[\\\"[[[\", 2]"), 1u);
   EXPECT_EQ(json_nesting_depth("1"), 0u);
   EXPECT_EQ(json_nesting_depth(nested(100000)), kMaxJsonDepth + 1);  // stops counting past the limit
