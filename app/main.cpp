@@ -8,17 +8,22 @@
 //         (a finished run's gauge pairs against linear water-wave theory, src/validation/linear_wave_report.h;
 //          writes DIR/linear_waves.csv, prints JSON)
 //   cdmpm --help | --version
-// Exit codes: 0 success, 1 runtime error (I/O), 2 bad input (scene or command line), 3 run went unstable.
+// Exit codes: 0 success, 1 runtime error (I/O), 2 bad input (scene, command line or checkpoint), 3 run went
+// unstable, 130/143 interrupted by SIGINT/SIGTERM (checkpoint written, resumable; run/interrupt.h).
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 
+#include "io/checkpoint_format.h"
 #include "scene/scene_loader.h"
+#include "parallel/omp_wait_policy.h"
+#include "run/interrupt.h"
 #include "run/runner.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
 
 int main(int argc, char** argv) {
+  cdmpm::choose_omp_wait_policy(argv);  // may execute the program again (parallel/omp_wait_policy.h)
   CLI::App app{"cdmpm: Material Point Method simulator of glacier calving and the tsunamis it raises"};
   app.set_version_flag("--version", std::string("cdmpm ") + CDMPM_VERSION);
   app.require_subcommand(1);
@@ -103,7 +108,7 @@ int main(int argc, char** argv) {
   cdmpm::Scene scene;
   try {
     scene = cdmpm::load_scene(scene_path, overrides);
-  } catch (const cdmpm::SceneError& e) {
+  } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
     std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;
   }
@@ -128,10 +133,14 @@ int main(int argc, char** argv) {
   } else {
     opt.out_dir = out_dir.empty() ? "output/" + scene.name : out_dir;
   }
+  cdmpm::install_interrupt_handlers();
   try {
     const cdmpm::RunResult r = cdmpm::run_scene(scene, opt);
     std::cout << "cdmpm: " << r.status << "; outputs in " << opt.out_dir << "\n";
     return r.exit_code;
+  } catch (const cdmpm::CheckpointError& e) {
+    std::cerr << "cdmpm: error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 1;

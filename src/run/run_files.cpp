@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/checkpoint_format.h"
 #include "io/frame_writer.h"
+#include "io/scene_fingerprint.h"
+#include "run/output_dir.h"
 #include "io/vtu_writer.h"
 
 namespace cdmpm {
@@ -28,10 +31,11 @@ void RunFiles<dim>::open_tables(bool append) {
 
 template <int dim>
 void RunFiles<dim>::start() {
-  fs::create_directories(out_);
+  prepare_output_dir(out_);
   open_tables(false);
   if (icebergs_.active()) bergs_ << IcebergTracker<dim>::csv_header() << '\n';
   meta.wave_dt_at_start = sim_.wave_dt_at_start;
+  meta.scene_fingerprint = scene_fingerprint(sim_.scene);
   csv_ << probes_.csv_header() << '\n';
   write_probes();
   write_frame();
@@ -42,6 +46,7 @@ void RunFiles<dim>::resume() {
   const std::string ckpt = path("checkpoint.bin").string();
   const size_t seeded = sim_.particles.size(), seeded_solids = sim_.particles.solid_count();
   meta = read_checkpoint(ckpt, sim_.particles);
+  validate_checkpoint(ckpt, meta, sim_.particles, sim_.scene);
   // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
   const bool fewer_allowed = !sim_.scene.sinks.empty();
   const size_t n = sim_.particles.size(), ns = sim_.particles.solid_count();
@@ -56,8 +61,8 @@ void RunFiles<dim>::resume() {
   if (!sim_.rigid.load(meta.rigid_bodies))
     throw std::runtime_error(ckpt + ": checkpoint holds the state of another set of rigid bodies than the scene's");
   icebergs_.first_ = meta.first_iceberg;
-  if (fs::exists(path("probes.csv"))) fs::resize_file(path("probes.csv"), meta.probes_csv_bytes);
-  if (icebergs_.active() && fs::exists(path("icebergs.csv"))) fs::resize_file(path("icebergs.csv"), meta.icebergs_csv_bytes);
+  restore_output_size(path("probes.csv"), meta.probes_csv_bytes);
+  if (icebergs_.active()) restore_output_size(path("icebergs.csv"), meta.icebergs_csv_bytes);
   open_tables(true);
 }
 

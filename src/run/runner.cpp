@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
 #include "run/run_files.h"
@@ -55,12 +56,16 @@ class TimeLoop {
         result.reason = *why;
         break;
       }
+      if (auto stop = interrupted()) {
+        result = *stop;
+        break;
+      }
       progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
-    if (result.status == "completed") files_.checkpoint();
+    if (result.status != "unstable") files_.checkpoint();
     progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
-    if (result.status != "completed") std::cerr << "cdmpm: run unstable: " << result.reason << "\n";
+    if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
     write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_.resume);
@@ -120,6 +125,13 @@ class TimeLoop {
     }
     if (opt_.max_steps > 0 && sim_.steps() - first_step >= opt_.max_steps)
       return "stopped after " + std::to_string(opt_.max_steps) + " steps (--steps)";
+    return std::nullopt;
+  }
+
+  // SIGINT or SIGTERM (run/interrupt.h): the run ends after this step, with a checkpoint.
+  std::optional<RunResult> interrupted() const {
+    if (const int sig = interrupt_signal())
+      return RunResult{"interrupted", std::string("stopped by ") + interrupt_signal_name(sig), 128 + sig};
     return std::nullopt;
   }
 

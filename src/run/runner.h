@@ -19,12 +19,13 @@ struct RunOptions {
 };
 
 struct RunResult {
-  std::string status;  // "completed" or "unstable"
+  std::string status;  // "completed", "unstable" or "interrupted" (SIGINT/SIGTERM, run/interrupt.h)
   std::string reason;
-  int exit_code = 0;   // 0 completed, 3 unstable
+  int exit_code = 0;   // 0 completed, 3 unstable, 128 + signal number interrupted (130 SIGINT, 143 SIGTERM)
 };
 
-// Exceptions: std::runtime_error for I/O problems (unwritable output, bad checkpoint).
+// Exceptions: CheckpointError (io/checkpoint_format.h) for a checkpoint that is corrupt or of another scene,
+// std::runtime_error for I/O problems (unwritable output).
 RunResult run_scene(const Scene& scene, const RunOptions& options);
 
 }  // namespace cdmpm

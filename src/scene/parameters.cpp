@@ -60,14 +60,31 @@ class Expression {
       else return v;
     }
   }
+  // Every recursion (parentheses, function arguments, '^' chains, unary minus) holds a Nesting while it
+  // runs, so the depth of the C++ stack is bounded by kMaxExpressionDepth.
+  struct Nesting {
+    Expression& e;
+    explicit Nesting(Expression& ex) : e(ex) {
+      if (++e.depth_ > kMaxExpressionDepth)
+        e.error("expression nested more than " + std::to_string(kMaxExpressionDepth) + " levels deep (the limit)");
+    }
+    ~Nesting() { --e.depth_; }
+  };
   double factor() {
     const double base = unary();
-    return accept('^') ? std::pow(base, factor()) : base;
+    if (!accept('^')) return base;
+    const Nesting n(*this);
+    return std::pow(base, factor());
   }
-  double unary() { return accept('-') ? -unary() : primary(); }
+  double unary() {
+    if (!accept('-')) return primary();
+    const Nesting n(*this);
+    return -unary();
+  }
   double primary() {
     skip();
     if (accept('(')) {
+      const Nesting n(*this);
       const double v = expr();
       if (!accept(')')) error("expected ')'");
       return v;
@@ -83,6 +100,7 @@ class Expression {
     const std::string name = s_.substr(start, i_ - start);
     if (name.empty()) error(i_ < s_.size() ? "unexpected '" + s_.substr(i_, 1) + "'" : "unexpected end");
     if (accept('(')) {
+      const Nesting n(*this);
       std::vector<double> args{expr()};
       while (accept(',')) args.push_back(expr());
       if (!accept(')')) error("expected ')'");
@@ -108,6 +126,7 @@ class Expression {
   const std::string& s_;
   const std::map<std::string, double>& vars_;
   size_t i_ = 0;
+  size_t depth_ = 0;
 };
 
 bool is_expression(const json& v) { return v.is_string() && !v.get<std::string>().empty() && v.get<std::string>()[0] == '='; }
@@ -118,8 +137,10 @@ double evaluate(const json& v, const std::map<std::string, double>& vars, const 
   try {
     return Expression(text, vars).evaluate();
   } catch (const std::exception& e) {
+    const std::string& all = v.get<std::string>();
+    const std::string shown = all.size() > 80 ? all.substr(0, 77) + "..." : all;
     throw SceneError(file + ": " + path + ": expected a number or an expression \"= ...\" of parameters, got \"" +
-                     v.get<std::string>() + "\" (" + e.what() + ")");
+                     shown + "\" (" + e.what() + ")");
   }
 }
 

@@ -16,6 +16,10 @@
 
 namespace cdmpm {
 
+// Deepest nesting of an expression (each parenthesis, function call, '^' and unary minus counts one
+// level); deeper expressions are refused, as the evaluator is recursive.
+constexpr size_t kMaxExpressionDepth = 64;
+
 // Replaces every "=expression" string in `j` by its value and removes j["parameters"]; the parameters' values
 // go into *resolved if given.
 void substitute_parameters(nlohmann::json& j, const std::string& file,

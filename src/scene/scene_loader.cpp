@@ -11,6 +11,7 @@
 
 #include "boundary/boundary.h"
 #include "probe/probe.h"
+#include "scene/json_limits.h"
 #include "scene/parameters.h"
 
 #include <algorithm>
@@ -281,6 +282,7 @@ void apply_override(json& j, const std::string& text, const std::string& file) {
     walked = here;
   }
   std::string value = text.substr(eq + 1);
+  check_json_depth(value, file + ": --set '" + text.substr(0, eq) + "'");
   try {
     *cur = json::parse(value);
   } catch (const json::exception&) {
@@ -294,6 +296,7 @@ Scene scene_from_json(json j, const std::string& path, const std::vector<std::st
   std::map<std::string, double> parameters;
   substitute_parameters(resolved, path, &parameters);
   Scene scene = Loader(path, resolved).load(resolved);
+  check_scene_name(scene.name, path);
   scene.parameters = std::move(parameters);
   scene.path = path;
   scene.json = std::move(j);
@@ -301,12 +304,13 @@ Scene scene_from_json(json j, const std::string& path, const std::vector<std::st
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open file");
+  const std::string text = read_scene_text(path);
+  check_json_depth(text, path);
+  std::istringstream in(text);
   json j;
   try {
     j = parse_rejecting_duplicates(in, path);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number such as 1e999
     throw SceneError(path + ": parse error: " + e.what());
   }
   return scene_from_json(std::move(j), path, overrides);

@@ -1,9 +1,11 @@
 // cli_helpers.h - helpers for end-to-end tests: run the cdmpm program, read probes.csv and summary.json.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint.h"
 #include "io/csv_table.h"
 
 namespace cdmpm::testing {
@@ -98,6 +101,26 @@ inline std::string read_bytes(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// Expects the particle states of checkpoints a and b to be bitwise identical.
+template <int dim>
+inline void expect_same_particles(const std::string& a, const std::string& b) {
+  Particles<dim> pa, pb;
+  read_checkpoint(a, pa);
+  read_checkpoint(b, pb);
+  ASSERT_EQ(pa.size(), pb.size());
+  auto same = [](const auto& x, const auto& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+  };
+  EXPECT_TRUE(same(pa.x, pb.x));
+  EXPECT_TRUE(same(pa.v, pb.v));
+  EXPECT_TRUE(same(pa.C, pb.C));
+  EXPECT_TRUE(same(pa.mass, pb.mass));
+  EXPECT_TRUE(same(pa.J, pb.J));
+  EXPECT_TRUE(same(pa.material, pb.material));
+  EXPECT_TRUE(same(pa.F, pb.F));
+  EXPECT_TRUE(same(pa.alpha, pb.alpha));
 }
 
 }  // namespace cdmpm::testing

@@ -63,24 +63,6 @@ TEST(Cli, UnstableRunStopsWithReasonAndKeepsFrames) {
   EXPECT_NE(read_bytes(dir / "out/particles.pvd").find("particles_0000.vtu"), std::string::npos);
 }
 
-template <int dim>
-void expect_same_particles(const std::string& a, const std::string& b) {
-  Particles<dim> pa, pb;
-  read_checkpoint(a, pa);
-  read_checkpoint(b, pb);
-  ASSERT_EQ(pa.size(), pb.size());
-  auto same = [](const auto& x, const auto& y) {
-    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
-  };
-  EXPECT_TRUE(same(pa.x, pb.x));
-  EXPECT_TRUE(same(pa.v, pb.v));
-  EXPECT_TRUE(same(pa.C, pb.C));
-  EXPECT_TRUE(same(pa.J, pb.J));
-  EXPECT_TRUE(same(pa.material, pb.material));
-  EXPECT_TRUE(same(pa.F, pb.F));
-  EXPECT_TRUE(same(pa.alpha, pb.alpha));
-}
-
 TEST(Cli, ResumeGivesBitwiseIdenticalState) {
   TempDir dir;
   const std::string scene = source_path("scenes/dam_break_2d.json");

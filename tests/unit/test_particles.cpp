@@ -103,7 +103,7 @@ TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("CDMPMCK4"), std::string::npos) << what;
-    EXPECT_NE(what.find("CDMPMCK6"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK7"), std::string::npos) << what;
     EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
   }
 }

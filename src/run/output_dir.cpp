@@ -1,0 +1,31 @@
+// output_dir.cpp - cleaning a reused output folder (see output_dir.h).
+#include "run/output_dir.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cdmpm {
+namespace fs = std::filesystem;
+
+bool is_run_output_file(const std::string& name) {
+  static constexpr std::array<std::string_view, 9> kFixed = {
+      "particles.pvd", "probes.csv", "icebergs.csv",   "waves.csv",         "linear_waves.csv",
+      "cauchy_poisson.csv", "summary.json", "checkpoint.bin", "checkpoint.bin.tmp"};
+  if (std::find(kFixed.begin(), kFixed.end(), name) != kFixed.end()) return true;
+  const std::string_view prefix = "particles_", suffix = ".vtu";
+  return name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) && name.ends_with(suffix);
+}
+
+size_t prepare_output_dir(const fs::path& out) {
+  fs::create_directories(out);
+  std::vector<fs::path> old;
+  for (const auto& entry : fs::directory_iterator(out))
+    if (!entry.is_directory() && is_run_output_file(entry.path().filename().string())) old.push_back(entry.path());
+  for (const auto& p : old) fs::remove(p);
+  return old.size();
+}
+
+}  // namespace cdmpm
