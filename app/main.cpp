@@ -1,7 +1,7 @@
 // main.cpp - the cdmpm command line.
 //
-//   cdmpm run SCENE [--out DIR] [--threads N] [--set path=value ...] [--resume DIR] [--quiet]
-//   cdmpm check SCENE [--set path=value ...]
+//   cdmpm run SCENE [--out DIR] [--threads N] [--set path=value ...] [--resume DIR] [--steps N] [--quiet] [--force]
+//   cdmpm check SCENE... [--set path=value ...]   (validity and the estimated cost of each run, run/run_estimate.h)
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
 //   cdmpm linear-waves DIR --depth h [--wall x] [--gravity g] [--box a w]
@@ -18,9 +18,31 @@
 #include "scene/scene_loader.h"
 #include "parallel/omp_wait_policy.h"
 #include "run/interrupt.h"
+#include "run/run_estimate.h"
 #include "run/runner.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
+
+// `cdmpm check`: each scene's validity, a summary and the estimate of its run; exit 2 if any is invalid or too
+// big for this machine.
+int check_scenes(const std::vector<std::string>& paths, const std::vector<std::string>& overrides) {
+  int status = 0;
+  for (const std::string& path : paths) {
+    try {
+      const cdmpm::Scene scene = cdmpm::load_scene(path, overrides);
+      const cdmpm::RunEstimate e = cdmpm::estimate_run(scene);
+      std::cout << scene.path << ": valid " << scene.dim << "D scene '" << scene.name << "', " << scene.materials.size()
+                << " material(s), " << scene.bodies.size() << " body(ies), " << scene.boundaries.size()
+                << " boundary(ies), " << scene.probes.size() << " probe(s), end time " << scene.time.end << " s\n  "
+                << cdmpm::describe(e) << "\n";
+      cdmpm::check_run_fits(scene, e);
+    } catch (const std::exception& e) {
+      std::cerr << "cdmpm: error: " << e.what() << "\n";
+      status = 2;
+    }
+  }
+  return status;
+}
 
 int main(int argc, char** argv) {
   cdmpm::choose_omp_wait_policy(argv);  // may execute the program again (parallel/omp_wait_policy.h)
@@ -43,9 +65,12 @@ int main(int argc, char** argv) {
   run->add_option("--steps", max_steps, "Stop after N steps (e.g. to measure speed and memory); summary.json says so")
       ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "No progress line");
+  bool force = false;
+  run->add_flag("--force", force, "Run even if the estimate exceeds the machine's memory or the frame limit");
 
-  auto* check = app.add_subcommand("check", "Validate a scene and print a summary of it");
-  check->add_option("scene", scene_path, "Scene file (JSON)")->required();
+  std::vector<std::string> check_paths;
+  auto* check = app.add_subcommand("check", "Validate scenes and print, for each, a summary and what a run would cost");
+  check->add_option("scenes", check_paths, "Scene files (JSON)")->required();
   check->add_option("--set", overrides, "Override a scene value (repeatable)");
 
   cdmpm::ImpulseWaveInput wave;
@@ -105,18 +130,14 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (check->parsed()) return check_scenes(check_paths, overrides);
   cdmpm::Scene scene;
   try {
     scene = cdmpm::load_scene(scene_path, overrides);
+    cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
   } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
     std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;
-  }
-  if (check->parsed()) {
-    std::cout << scene.path << ": valid " << scene.dim << "D scene '" << scene.name << "', " << scene.materials.size()
-              << " material(s), " << scene.bodies.size() << " body(ies), " << scene.boundaries.size()
-              << " boundary(ies), " << scene.probes.size() << " probe(s), end time " << scene.time.end << " s\n";
-    return 0;
   }
 
   cdmpm::RunOptions opt;
@@ -139,6 +160,9 @@ int main(int argc, char** argv) {
     std::cout << "cdmpm: " << r.status << "; outputs in " << opt.out_dir << "\n";
     return r.exit_code;
   } catch (const cdmpm::CheckpointError& e) {
+    std::cerr << "cdmpm: error: " << e.what() << "\n";
+    return 2;
+  } catch (const cdmpm::SceneError& e) {  // found while building the run, e.g. a body that seeds no particle
     std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -83,9 +83,10 @@ inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
                "alpha0", "tensile_strength", "hardening", "plastic"});
   Ice ice;
-  ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), gt(0)));
-  const double E = r.number(r.required(m, "youngs_modulus"), gt(0));
-  const double nu = r.number(m, "poissons_ratio", {-1, 0.5, true, true}, 0.3);
+  // Bounds of real materials, which keep the time step and the state representable.
+  ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), {1, 1e5}, " kg/m^3"));
+  const double E = r.number(r.required(m, "youngs_modulus"), {0, 1e12, true, false}, " Pa");
+  const double nu = r.number(m, "poissons_ratio", {-1, 0.49, true, false}, 0.3);
   ice.plasticity = r.boolean(m, "plastic", true);
   ice.plastic.hardening = r.boolean(m, "hardening", true);
   ice.elastic = NeoHookeanSplit::from_young_poisson(static_cast<Real>(E), static_cast<Real>(nu), r.dim());

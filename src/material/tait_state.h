@@ -33,11 +33,12 @@ struct TaitState {
   void fields(const Particles<dim>&, size_t, float*) const {}
 
  protected:
-  // Reads density, bulk_modulus (required) and gamma (default 7) of a scene material object.
+  // Reads density [1, 1e5] kg/m^3, bulk_modulus (0, 1e12] Pa (both required) and gamma (0, 20] (default 7) of a
+  // scene material object: bounds of real materials, which keep the time step and the state representable.
   static WeaklyCompressibleWater read_eos(const SceneReader& r, const Node& n) {
-    return {static_cast<Real>(r.number(r.required(n, "density"), gt(0))),
-            static_cast<Real>(r.number(r.required(n, "bulk_modulus"), gt(0))),
-            static_cast<Real>(r.number(n, "gamma", gt(0), 7.0)), 0};
+    return {static_cast<Real>(r.number(r.required(n, "density"), {1, 1e5}, " kg/m^3")),
+            static_cast<Real>(r.number(r.required(n, "bulk_modulus"), {0, 1e12, true, false}, " Pa")),
+            static_cast<Real>(r.number(n, "gamma", {0, 20, true, false}, 7.0)), 0};
   }
 };
 

@@ -5,7 +5,7 @@
 // State: the total volume ratio J = V / V0, advanced by the discrete continuity equation
 //   J <- J (1 + dt tr C_p)                  (dJ/dt = J div v, C_p the particle's velocity gradient).
 // Viscosity adds the explicit diffusion limit dt <= dx^2 rho / (2 dim mu).
-// Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0) - docs/scenes.md.
+// Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0, at most 1e6 Pa s) - docs/scenes.md.
 #pragma once
 
 #include "material/tait_state.h"
@@ -20,7 +20,7 @@ struct Water : TaitState {
     r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
     Water w;
     w.eos = read_eos(r, n);
-    w.eos.mu = static_cast<Real>(r.number(n, "viscosity", ge(0), 0.0));
+    w.eos.mu = static_cast<Real>(r.number(n, "viscosity", {0, 1e6}, 0.0));
     return w;
   }
   Real stable_dt(Real dx, int dim) const {

@@ -40,7 +40,8 @@ class Loader {
     if (s_.name.empty()) r_.expected(root["name"], "a non-empty string");
     domain(r_.required(root, "domain"));
     time(r_.required(root, "time"));
-    s_.gravity = root.has("gravity") ? r_.numbers(root["gravity"], dim_) : std::vector<double>(dim_, 0.0);
+    // At most 1000 m/s^2 on any axis (100 g): larger values are input mistakes, not planets.
+    s_.gravity = root.has("gravity") ? r_.numbers(root["gravity"], dim_, {-1e3, 1e3}) : std::vector<double>(dim_, 0.0);
     if (!root.has("gravity")) s_.gravity.back() = -9.81;
     materials(r_.required(root, "materials"));
     Node bodies = r_.required(root, "bodies");

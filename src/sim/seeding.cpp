@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "scene/scene_reader.h"
 #include "sim/rigid_bodies.h"
 
 namespace cdmpm {
@@ -138,12 +139,17 @@ template <int dim>
 void seed_bodies(const Scene& scene, std::vector<Material>& materials,
                  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles) {
   for (const bool solids : {true, false})
-    for (const BodySpec& b : scene.bodies) {
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+      const BodySpec& b = scene.bodies[i];
       Material& mat = materials[b.material_index];
       if (mat.traits().solid_state != solids) continue;
       const BodySeeder<dim> seeder(scene, b, materials, boundaries);
       mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
+      const size_t before = particles.size();
       seeder.seed(particles);
+      if (particles.size() == before)
+        throw SceneError(scene.path + ": bodies[" + std::to_string(i) + "]: seeds no particle (its shape is smaller "
+                         "than the particle spacing, or lies inside its holes, a rigid body or the solid of a boundary)");
     }
 }
 

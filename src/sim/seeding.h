@@ -22,7 +22,8 @@
 
 namespace cdmpm {
 
-// Seeds every body of the scene; sets each material's half particle spacing.
+// Seeds every body of the scene; sets each material's half particle spacing. Throws SceneError naming a body
+// that seeds no particle.
 template <int dim>
 void seed_bodies(const Scene& scene, std::vector<Material>& materials,
                  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles);

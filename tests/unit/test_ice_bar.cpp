@@ -51,7 +51,8 @@ const Bar& bar() {
   static const Bar b = [] {
     const Scene s = bar_scene(1, 1);
     const nlohmann::json& ice = s.json.at("materials").at("ice");
-    return Bar{ice.at("youngs_modulus").get<double>(), ice.at("poissons_ratio").get<double>(), ice.at("density").get<double>(),
+    // poissons_ratio is the expression "= nu": its value is the resolved parameter.
+    return Bar{ice.at("youngs_modulus").get<double>(), s.parameters.at("nu"), ice.at("density").get<double>(),
                s.json.at("materials").at("ice").at("tensile_strength").get<double>(),
                s.json.at("parameters").at("centre").get<double>()};
   }();

@@ -1,0 +1,102 @@
+// run_estimate.cpp - a run's cost from its scene, and the check that it fits (run_estimate.h).
+#include "run/run_estimate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "grid/grid.h"
+#include "run/progress.h"
+#include "scene/scene_reader.h"
+
+namespace cdmpm {
+namespace {
+
+// Lattice points (k + 1/2) h of the body's bounding box: an upper bound of what it seeds.
+double body_particles(const BodySpec& b, int dim, double dx) {
+  const double n = std::round(std::pow(b.particles_per_cell, 1.0 / dim));
+  const double h = dx / n;
+  double count = 1;
+  for (int a = 0; a < dim; ++a) count *= std::max(0.0, std::ceil(b.shape.upper(a) / h - 0.5) - std::floor(b.shape.lower(a) / h - 0.5) + 1);
+  return count;
+}
+
+// The fastest wave of any material at rest [m/s], and the smallest of the materials' own time-step limits [s].
+void material_speeds(const Scene& s, double& wave, double& own_dt) {
+  wave = 0;
+  own_dt = std::numeric_limits<double>::infinity();
+  for (const Material& m : s.materials)
+    m.visit([&](const auto& model) {
+      wave = std::max(wave, double(s.dim == 2 ? model.template wave_speed<2>(1) : model.template wave_speed<3>(1)));
+      own_dt = std::min(own_dt, double(model.stable_dt(static_cast<Real>(s.domain.dx), s.dim)));
+    });
+}
+
+std::string gigabytes(double bytes) {
+  std::ostringstream os;
+  os.precision(3);
+  os << bytes / 1e9 << " GB";
+  return os.str();
+}
+
+}  // namespace
+
+double machine_memory_bytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  while (in >> key >> kb)
+    if (key == "MemTotal:") return kb * 1024;
+  return 0;
+}
+
+RunEstimate estimate_run(const Scene& s) {
+  RunEstimate e;
+  const double dx = s.domain.dx;
+  for (const BodySpec& b : s.bodies) e.particles += body_particles(b, s.dim, dx);
+  e.lattice_blocks = 1;
+  for (int a = 0; a < s.dim; ++a)
+    e.lattice_blocks *= std::ceil((std::ceil(s.domain.size[a] / dx) + 1 + 2 * Grid<2>::ghost) / Grid<2>::block_width);
+  e.memory_bytes = e.particles * (s.dim == 3 ? 250 : 160) + 8 * e.lattice_blocks + 64e6;
+  double wave = 0, own_dt = 0;
+  material_speeds(s, wave, own_dt);
+  e.first_dt = std::min(s.time.wave_cfl * dx / std::max(wave, 1e-300), own_dt * s.time.wave_cfl);
+  if (s.time.max_dt > 0) e.first_dt = std::min(e.first_dt, s.time.max_dt);
+  e.steps = std::ceil(s.time.end / e.first_dt);
+  e.frames = s.output.frames ? std::floor(s.time.end / s.time.frame_interval + 1e-9) + 1 : 0;
+  e.frame_bytes = e.frames * e.particles * (s.dim == 3 ? 40 : 25);
+  e.wall_seconds = e.particles * e.steps / (s.dim == 3 ? 2e6 : 4e6);
+  return e;
+}
+
+std::string describe(const RunEstimate& e) {
+  std::ostringstream os;
+  os.precision(3);
+  os << "particles <= " << e.particles << ", memory ~" << gigabytes(e.memory_bytes) << ", first dt " << e.first_dt
+     << " s, ~" << e.steps << " steps, " << e.frames << " frames (~" << gigabytes(e.frame_bytes) << "), wall time ~"
+     << format_duration(e.wall_seconds) << " on 2 cores";
+  return os.str();
+}
+
+void check_run_fits(const Scene& s, const RunEstimate& e, bool force) {
+  const std::string est = " (estimate: " + describe(e) + ")";
+  for (int a = 0; a < s.dim; ++a)
+    if (s.domain.size[a] / s.domain.dx >= double(1 << 30))
+      throw SceneError(s.path + ": domain.dx: " + format_number(s.domain.size[a] / s.domain.dx) +
+                       " cells along axis " + std::to_string(a) + ", more than the grid's 2^30: coarsen domain.dx" + est);
+  if (e.lattice_blocks >= 4e9)
+    throw SceneError(s.path + ": domain.dx: the grid lattice would have " + format_number(e.lattice_blocks) +
+                     " blocks, more than its 32-bit block index holds: coarsen domain.dx" + est);
+  if (force) return;
+  const std::string override_text = est + "; cdmpm run --force runs it anyway";
+  const double machine = machine_memory_bytes();
+  if (machine > 0 && e.memory_bytes > 0.9 * machine)
+    throw SceneError(s.path + ": the run needs about " + gigabytes(e.memory_bytes) + " of memory, the machine has " +
+                     gigabytes(machine) + ": coarsen domain.dx or bodies' particles_per_cell" + override_text);
+  if (e.frames > max_frames)
+    throw SceneError(s.path + ": time.frame_interval: the run would write " + format_number(e.frames) +
+                     " frames, more than " + format_number(max_frames) + ": raise time.frame_interval" + override_text);
+}
+
+}  // namespace cdmpm

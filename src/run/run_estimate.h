@@ -1,0 +1,46 @@
+// run_estimate.h - what a run will cost, estimated from the scene alone before anything is allocated: particles
+// (at most: every lattice point of each body's bounding box), memory, the first time step, steps to the end,
+// frames, output size and wall time on this machine; and the check that refuses, before it starts, a run that
+// would not fit the machine's memory, whose grid lattice would overflow its indices, or that would write more
+// frames than a set limit (`cdmpm run --force` runs it anyway; docs/scenes.md, "Limits").
+//
+// Memory: bytes_per_particle (3D 250 B, 2D 160 B: a particle's arrays, solids first, docs/performance.md,
+// plus bins, grid and frame buffers) times the particles, plus 8 B per block of the grid's lattice (the dense
+// block slot and bin tables), plus 64 MB for the program. First time step: the scene's time step rule with
+// every particle at rest (time.wave_cfl dx / the fastest material's rest wave speed, its own limits, max_dt).
+// Wall time: particles x steps over the particle-steps per second measured on this machine's 2 cores
+// (2D 4 M/s, 3D 2 M/s, docs/performance.md), i.e. a rough guide, not a promise.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace cdmpm {
+
+struct RunEstimate {
+  double particles = 0;        // at most
+  double lattice_blocks = 0;   // blocks of 4^dim nodes over the whole domain
+  double memory_bytes = 0;
+  double first_dt = 0;         // [s]
+  double steps = 0;            // to time.end at the first time step
+  double frames = 0;
+  double frame_bytes = 0;      // all frames, compressed (about 25 B per particle in 2D, 40 in 3D)
+  double wall_seconds = 0;
+};
+
+RunEstimate estimate_run(const Scene& scene);
+
+// The machine's physical memory [bytes] (/proc/meminfo MemTotal; 0 if unknown).
+double machine_memory_bytes();
+
+// Throws SceneError, with the estimate in the message, if the grid's lattice overflows its indices (always), or,
+// unless `force`, if the run would need more memory than the machine has or write more than max_frames frames.
+inline constexpr double max_frames = 10000;
+void check_run_fits(const Scene& scene, const RunEstimate& estimate, bool force = false);
+
+// One line a person reads: "particles <= N, memory ~X GB, first dt Y s, ~S steps, F frames (~B GB), ~T".
+std::string describe(const RunEstimate& estimate);
+
+}  // namespace cdmpm

@@ -1,0 +1,70 @@
+// test_run_limits.cpp - inputs that used to run for minutes, eat the machine's memory or overflow the grid now
+// stop before the run starts, with exit code 2, a message naming the key and what was expected (or the run's
+// estimate), and nothing written: physical ranges of material keys and gravity, the up-front estimate of memory
+// and frames (run/run_estimate.h, with --force as the override), the grid lattice bound, and a body that seeds
+// no particle. `cdmpm check` takes several scenes and reports each one's estimate.
+#include <gtest/gtest.h>
+
+#include "cli_helpers.h"
+
+namespace cdmpm::testing {
+namespace {
+
+const std::string kScene = source_path("scenes/calving_front_2d.json");
+
+// `cdmpm run` of the default scene with `sets` exits 2 naming `what` and writes no output folder.
+void expect_refused(const std::vector<std::string>& sets, const std::string& what) {
+  TempDir dir;
+  std::vector<std::string> args = {"run", kScene, "--out", dir / "out", "--quiet"};
+  for (const auto& s : sets) args.insert(args.end(), {"--set", s});
+  const auto r = run_cdmpm(args);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(what), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out")) << "output written for a refused run";
+}
+
+TEST(RunLimits, NonPhysicalMaterialValuesAreInputErrors) {
+  expect_refused({"materials.water.density=1e-300"}, "materials.water.density: expected a number in [1, 100000] kg/m^3");
+  expect_refused({"materials.water.density=1e308"}, "materials.water.density: expected a number in [1, 100000]");
+  expect_refused({"materials.water.bulk_modulus=1e20"}, "materials.water.bulk_modulus: expected a number in (0, 1e+12] Pa");
+  expect_refused({"materials.ice.youngs_modulus=1e300"}, "materials.ice.youngs_modulus: expected a number in (0, 1e+12] Pa");
+  expect_refused({"materials.ice.poissons_ratio=0.4999999999"}, "materials.ice.poissons_ratio: expected a number in (-1, 0.49]");
+  expect_refused({"gravity=[0,-1e30]"}, "gravity[1]: expected a number in [-1000, 1000]");
+}
+
+TEST(RunLimits, RunsTooBigForTheMachineAreRefusedWithTheirEstimate) {
+  expect_refused({"parameters.dx=0.01"}, "of memory, the machine has");     // ~1e9 particles
+  expect_refused({"bodies.0.particles_per_cell=1000000"}, "of memory, the machine has");
+  expect_refused({"domain.dx=1e-300"}, "domain.dx");                       // lattice overflow, even with --force
+  expect_refused({"time.frame_interval=1e-12"}, "time.frame_interval: the run would write");
+  TempDir dir;
+  const auto forced = run_cdmpm({"run", kScene, "--out", dir / "out", "--quiet", "--force", "--set", "domain.dx=1e-300"});
+  EXPECT_EQ(forced.exit_code, 2) << "the lattice bound holds with --force: " << forced.output;
+}
+
+TEST(RunLimits, ForceRunsPastTheFrameLimit) {
+  TempDir dir;
+  const auto r = run_cdmpm({"run", kScene, "--out", dir / "out", "--quiet", "--force", "--set", "time.end=0.002",
+                            "--set", "time.frame_interval=1e-7", "--set", "output.frames=false", "--steps", "2"});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+TEST(RunLimits, ABodyThatSeedsNoParticleIsAnInputError) {
+  // The water body made smaller than the particle spacing (its box lies between two lattice points).
+  expect_refused({"bodies.1.shape.max.1=0.1", "bodies.1.shape.min.1=0.05"}, "bodies[1]: seeds no particle");
+}
+
+TEST(RunLimits, CheckReportsEachScenesEstimate) {
+  const auto r = run_cdmpm({"check", kScene, source_path("scenes/dam_break_2d.json")});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("calving_front_2d.json: valid 2D scene"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("dam_break_2d.json: valid 2D scene"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("particles <= "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("first dt "), std::string::npos) << r.output;
+  const auto bad = run_cdmpm({"check", kScene, source_path("tests/bad_scenes/dx_negative.json")});
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("calving_front_2d.json: valid"), std::string::npos) << "the good scene is still reported";
+}
+
+}  // namespace
+}  // namespace cdmpm::testing
