@@ -2,7 +2,7 @@
 //
 //   v_i = (mv)_i / m_i + dt g      for every node with mass (the stress impulse is already in (mv)_i),
 // then each boundary's condition on the nodes inside its solid (boundary/boundary.h).
-// Nodes with mass below a tiny fraction of the typical node mass are treated as empty (v = 0).
+// Nodes without mass are left as they are (p2g gave them zero momentum, so g2p reads v = 0 there).
 #pragma once
 
 #include <memory>

@@ -16,6 +16,26 @@ namespace {
 
 Mat<2> diag(Real a) { return Vec<2>(a, a).asDiagonal(); }
 
+// The batch a process sends away when particles migrate: extract copies the listed particles with their ids and
+// solid state; append adds them to another set, solids after its solids; ids follow the particles.
+TEST(Particles, ExtractAndAppendMoveParticlesWithTheirIdsAndState) {
+  Particles<2> a, b;
+  for (Real k : {1, 2, 3}) a.add_solid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, Mat<2>::Zero(), diag(k), -k);
+  for (Real k : {4, 5}) a.add_fluid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 0);
+  b.next_id = 100;
+  b.add_solid(Vec<2>::Zero(), Vec<2>::Zero(), 10, 1, 1, Mat<2>::Zero(), diag(10), -10);
+  b.add_fluid(Vec<2>::Zero(), Vec<2>::Zero(), 11, 1, 0);
+  const Particles<2> batch = a.extract({1, 2, 4});
+  EXPECT_EQ(batch.id, (std::vector<uint64_t>{1, 2, 4}));
+  EXPECT_EQ(batch.solid_count(), 2u);
+  b.append(batch);
+  EXPECT_EQ(b.id, (std::vector<uint64_t>{100, 1, 2, 101, 4}));
+  EXPECT_EQ(b.mass, (std::vector<Real>{10, 2, 3, 11, 5}));
+  ASSERT_EQ(b.solid_count(), 3u);
+  for (size_t q = 0; q < b.solid_count(); ++q) EXPECT_EQ(b.F[q], diag(b.mass[q])) << q;
+  EXPECT_EQ(b.alpha, (std::vector<Real>{-10, -2, -3}));
+}
+
 TEST(Particles, SolidsFirstAndPermuteCarriesTheSolidState) {
   // Particles are told apart by their mass k; solid k has F = k I and alpha = -k.
   Particles<2> p;
