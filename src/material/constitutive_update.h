@@ -10,10 +10,12 @@
 
 namespace cdmpm {
 
+// Dynamic chunks: the solids come first (core/particles.h) and cost far more (SVD, return mapping) than fluids,
+// so equal static halves would leave one thread with all the ice. Each particle writes only its own state.
 template <int dim>
 void constitutive_update(Particles<dim>& p, const std::vector<Material>& materials, Real dt) {
   const size_t n = p.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 256)
   for (size_t q = 0; q < n; ++q)
     materials[p.material[q]].visit([&](const auto& model) { model.template update<dim>(p, q, dt); });
 }
