@@ -1,6 +1,7 @@
 // main.cpp - the cdmpm command line.
 //
-//   cdmpm run SCENE [--out DIR] [--threads N] [--set path=value ...] [--resume DIR] [--steps N] [--quiet] [--force]
+//   cdmpm run SCENE [--out DIR] [--threads N] [--set path=value ...] [--steps N] [--quiet] [--force]
+//   cdmpm run [SCENE] --resume DIR [--set time.end=...]   (scene and --set values from DIR/run.json)
 //   cdmpm check SCENE... [--set path=value ...]   (validity and the estimated cost of each run, run/run_estimate.h)
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
@@ -11,7 +12,9 @@
 // Exit codes: 0 success, 1 runtime error (I/O), 2 bad input (scene, command line or checkpoint), 3 run went
 // unstable, 130/143 interrupted by SIGINT/SIGTERM (checkpoint written, resumable; run/interrupt.h).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "io/checkpoint_format.h"
@@ -44,6 +47,32 @@ int check_scenes(const std::vector<std::string>& paths, const std::vector<std::s
   return status;
 }
 
+// The scene and --set values a resumed run starts from: those DIR/run.json recorded (the scene given on the
+// command line, if any, replaces its scene file), then the new --set values (a resume may change time.end and
+// the output intervals; the checkpoint's scene fingerprint refuses any other change). An output folder written
+// before run.json existed needs the scene and its --set values on the command line.
+void resume_inputs(const std::string& dir, std::string& scene_path, std::vector<std::string>& overrides) {
+  const std::filesystem::path file = std::filesystem::path(dir) / "run.json";
+  if (!std::filesystem::is_regular_file(file)) {
+    if (!scene_path.empty()) return;
+    throw std::runtime_error(dir + ": no run.json: not the output folder of a cdmpm run (give the scene file too)");
+  }
+  nlohmann::json run;
+  try {
+    run = nlohmann::json::parse(std::ifstream(file));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!run.is_object() || !run.contains("scene_file") || !run["scene_file"].is_string() || !run.contains("overrides") ||
+      !run["overrides"].is_array() ||
+      !std::all_of(run["overrides"].begin(), run["overrides"].end(), [](const auto& o) { return o.is_string(); }))
+    throw std::runtime_error(file.string() + ": expected an object with \"scene_file\" (a string) and \"overrides\" (strings)");
+  if (scene_path.empty()) scene_path = run["scene_file"].get<std::string>();
+  std::vector<std::string> all = run["overrides"].get<std::vector<std::string>>();
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  overrides = std::move(all);
+}
+
 int main(int argc, char** argv) {
   cdmpm::choose_omp_wait_policy(argv);  // may execute the program again (parallel/omp_wait_policy.h)
   CLI::App app{"cdmpm: Material Point Method simulator of glacier calving and the tsunamis it raises"};
@@ -57,11 +86,12 @@ int main(int argc, char** argv) {
   bool quiet = false;
 
   auto* run = app.add_subcommand("run", "Run a scene");
-  run->add_option("scene", scene_path, "Scene file (JSON)")->required();
+  run->add_option("scene", scene_path, "Scene file (JSON); with --resume DIR, default the one DIR/run.json names");
   run->add_option("--out", out_dir, "Output directory (default: output/<scene name>)");
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   run->add_option("--set", overrides, "Override a scene value, e.g. --set time.end=0.5 (repeatable)");
-  run->add_option("--resume", resume_dir, "Continue the run in DIR from its last checkpoint");
+  run->add_option("--resume", resume_dir,
+                  "Continue the run in DIR from its last checkpoint, with the scene and --set values of DIR/run.json");
   run->add_option("--steps", max_steps, "Stop after N steps (e.g. to measure speed and memory); summary.json says so")
       ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "No progress line");
@@ -133,6 +163,8 @@ int main(int argc, char** argv) {
   if (check->parsed()) return check_scenes(check_paths, overrides);
   cdmpm::Scene scene;
   try {
+    if (!resume_dir.empty()) resume_inputs(resume_dir, scene_path, overrides);
+    if (scene_path.empty()) throw std::runtime_error("run: a scene file is required (or --resume DIR)");
     scene = cdmpm::load_scene(scene_path, overrides);
     cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
   } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
@@ -141,6 +173,7 @@ int main(int argc, char** argv) {
   }
 
   cdmpm::RunOptions opt;
+  opt.command_line.assign(argv, argv + argc);
   opt.threads = threads;
   opt.progress = !quiet;
   opt.max_steps = max_steps;

@@ -2,6 +2,7 @@
 #include "run/run_files.h"
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "io/checkpoint_format.h"
@@ -30,8 +31,21 @@ void RunFiles<dim>::open_tables(bool append) {
 }
 
 template <int dim>
-void RunFiles<dim>::start() {
+void RunFiles<dim>::write_provenance(const std::vector<std::string>& command_line) const {
+  const Scene& scene = sim_.scene;
+  const nlohmann::json run = {{"scene_file", fs::absolute(scene.path).lexically_normal().string()},
+                              {"overrides", scene.overrides},
+                              {"command_line", command_line},
+                              {"version", CDMPM_VERSION},
+                              {"git_commit", CDMPM_GIT_COMMIT}};
+  std::ofstream(path("run.json")) << run.dump(2) << '\n';
+  std::ofstream(path("scene.resolved.json")) << scene.resolved.dump(2) << '\n';
+}
+
+template <int dim>
+void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
   prepare_output_dir(out_);
+  write_provenance(command_line);
   open_tables(false);
   if (icebergs_.active()) bergs_ << IcebergTracker<dim>::csv_header() << '\n';
   meta.wave_dt_at_start = sim_.wave_dt_at_start;

@@ -3,7 +3,10 @@
 //   icebergs.csv            scenes with breakable ice: the bodies of intact ice per frame (probe/iceberg_tracker.h),
 //   particles_NNNN.vtu      the frames (io/frame_writer.h), listed with their times in particles.pvd,
 //   checkpoint.bin          the state to resume from (io/checkpoint.h), with the sizes of the two CSV files at
-//                           that moment, so that a resumed run cuts them back to where the checkpoint was taken.
+//                           that moment, so that a resumed run cuts them back to where the checkpoint was taken,
+//   run.json                provenance: the scene file (absolute path), the --set values, the command line, the
+//                           version and git commit; `cdmpm run --resume DIR` reads the scene and --set values here,
+//   scene.resolved.json     the scene as loaded: --set values applied, parameters and expressions evaluated.
 // A fresh run creates the folder and the files; a resumed run reads the checkpoint into the simulation, the
 // probes and the iceberg tracker, and appends to the files.
 #pragma once
@@ -23,8 +26,9 @@ template <int dim>
 class RunFiles {
  public:
   RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs);
-  // Creates the output files and writes the initial probe sample, frame and icebergs.
-  void start();
+  // Creates the output files (run.json records `command_line`) and writes the initial probe sample, frame and
+  // icebergs.
+  void start(const std::vector<std::string>& command_line);
   // Loads the checkpoint into the simulation, probes and tracker and reopens the files for appending.
   void resume();
 
@@ -41,6 +45,7 @@ class RunFiles {
 
  private:
   void open_tables(bool append);
+  void write_provenance(const std::vector<std::string>& command_line) const;
   std::filesystem::path out_;
   Simulation<dim>& sim_;
   Probes<dim>& probes_;

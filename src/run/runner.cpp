@@ -42,7 +42,7 @@ class TimeLoop {
 
   RunResult run() {
     if (opt_.resume) resume();
-    else files_.start();
+    else files_.start(opt_.command_line);
     times_.setup = elapsed();
     Progress progress(opt_.progress, sim_.time(), scene_.time.end);
     RunResult result{"completed", "", 0};
@@ -68,7 +68,7 @@ class TimeLoop {
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
-    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_.resume);
+    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_);
     return result;
   }
 

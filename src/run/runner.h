@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -16,6 +17,7 @@ struct RunOptions {
   bool resume = false;   // continue from out_dir/checkpoint.bin
   bool progress = true;  // progress line on stderr
   long long max_steps = 0;  // stop (status completed) after this many steps of this run; 0: run to the end time
+  std::vector<std::string> command_line;  // recorded in run.json and summary.json
 };
 
 struct RunResult {

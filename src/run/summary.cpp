@@ -22,7 +22,7 @@ nlohmann::json energy_json(const EnergyTotals& e) {
 
 template <int dim>
 void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
-                   const EnergyTotals& e0, const RunTimes& t, const RunResult& result, bool resumed) {
+                   const EnergyTotals& e0, const RunTimes& t, const RunResult& result, const RunOptions& options) {
   const Scene& scene = sim.scene;
   const std::filesystem::path out(out_dir);
   const EnergyTotals e1 = energy_totals(sim.particles, sim.materials, sim.gravity);
@@ -53,7 +53,10 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
   s.update(wave_report(scene, (out / "probes.csv").string(), (out / "waves.csv").string()));
   s["status"] = result.status;
   s["reason"] = result.reason;
-  s["resumed"] = resumed;
+  s["resumed"] = options.resume;
+  s["overrides"] = scene.overrides;
+  s["command_line"] = options.command_line;
+  s["git_commit"] = CDMPM_GIT_COMMIT;
   s["threads"] = omp_get_max_threads();
   s["precision"] = sizeof(Real) == 8 ? "double" : "single";
   s["version"] = CDMPM_VERSION;
@@ -61,8 +64,8 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
 }
 
 template void write_summary<2>(const std::string&, const Simulation<2>&, const IcebergTracker<2>&, const EnergyTotals&,
-                               const RunTimes&, const RunResult&, bool);
+                               const RunTimes&, const RunResult&, const RunOptions&);
 template void write_summary<3>(const std::string&, const Simulation<3>&, const IcebergTracker<3>&, const EnergyTotals&,
-                               const RunTimes&, const RunResult&, bool);
+                               const RunTimes&, const RunResult&, const RunOptions&);
 
 }  // namespace cdmpm

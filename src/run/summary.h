@@ -2,7 +2,8 @@
 // its resolved parameters, particles, steps, simulated and wall time, particle-steps per second (overall and
 // while stepping), the wall time of each phase of the step (phase_seconds, sim/phases.h), peak memory and
 // bytes per particle, mass change, energies at the start and the end, the first iceberg, the wave report of
-// the gauges (probe/wave_report.h), status and reason, threads, precision and version.
+// the gauges (probe/wave_report.h), status and reason, threads, precision, version, git commit, the --set values
+// and the command line.
 #pragma once
 
 #include <string>
@@ -22,6 +23,6 @@ struct RunTimes {
 
 template <int dim>
 void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
-                   const EnergyTotals& e0, const RunTimes& times, const RunResult& result, bool resumed);
+                   const EnergyTotals& e0, const RunTimes& times, const RunResult& result, const RunOptions& options);
 
 }  // namespace cdmpm

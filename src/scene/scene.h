@@ -106,6 +106,8 @@ struct Scene {
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   nlohmann::json json;          // the scene as read, with --set overrides applied
+  nlohmann::json resolved;      // the same with its parameters and expressions evaluated (what was loaded)
+  std::vector<std::string> overrides;  // the --set values applied, in order
   std::map<std::string, double> parameters;  // the values of its "parameters" (after --set), for summary.json
 
   int material_index(const std::string& material_name) const {

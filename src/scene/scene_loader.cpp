@@ -301,6 +301,8 @@ Scene scene_from_json(json j, const std::string& path, const std::vector<std::st
   scene.parameters = std::move(parameters);
   scene.path = path;
   scene.json = std::move(j);
+  scene.resolved = std::move(resolved);
+  scene.overrides = overrides;
   return scene;
 }
 

@@ -113,6 +113,7 @@ inline void expect_same_particles(const std::string& a, const std::string& b) {
   auto same = [](const auto& x, const auto& y) {
     return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
   };
+  EXPECT_TRUE(same(pa.id, pb.id));
   EXPECT_TRUE(same(pa.x, pb.x));
   EXPECT_TRUE(same(pa.v, pb.v));
   EXPECT_TRUE(same(pa.C, pb.C));

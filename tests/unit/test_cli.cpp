@@ -85,6 +85,42 @@ TEST(Cli, ResumeGivesBitwiseIdenticalState) {
   EXPECT_NE(r.output.find("checkpoint"), std::string::npos) << r.output;
 }
 
+// `--resume DIR` alone: the scene and --set values come from DIR/run.json, which records them with the command
+// line, version and commit (also in summary.json, beside scene.resolved.json, the scene as loaded). The resumed
+// run ends in the same state as the straight one, bit for bit. A folder that is not a run's is refused.
+TEST(Cli, ResumeNeedsNoRepeatedSetValues) {
+  TempDir dir;
+  const std::string scene = source_path("scenes/dam_break_2d.json");
+  const std::vector<std::string> sets = {"--set", "domain.dx=0.003571875", "--set", "time.frame_interval=0.01"};
+  auto args = [&](std::vector<std::string> a, const std::string& end) {
+    a.insert(a.end(), sets.begin(), sets.end());
+    a.insert(a.end(), {"--set", "time.end=" + end, "--quiet"});
+    return a;
+  };
+  auto r = run_cdmpm(args({"run", scene, "--out", dir / "full"}, "0.06"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cdmpm(args({"run", scene, "--out", dir / "half"}, "0.03"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto run = read_json(dir / "half/run.json");
+  EXPECT_EQ(run["overrides"].size(), 3u);
+  EXPECT_EQ(run["overrides"][0], "domain.dx=0.003571875");
+  EXPECT_TRUE(fs::exists(dir / "half/scene.resolved.json"));
+  EXPECT_EQ(read_json(dir / "half/summary.json")["command_line"][1], "run");
+  r = run_cdmpm({"run", "--resume", dir / "half", "--set", "time.end=0.06", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_same_particles<2>(dir / "full/checkpoint.bin", dir / "half/checkpoint.bin");
+  EXPECT_EQ(read_bytes(dir / "full/probes.csv"), read_bytes(dir / "half/probes.csv"));
+  // A folder without run.json (and no scene given), and a run.json that is not one, are refused with exit 2.
+  fs::create_directories(dir / "foreign");
+  r = run_cdmpm({"run", "--resume", dir / "foreign"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not the output folder of a cdmpm run"), std::string::npos) << r.output;
+  std::ofstream(dir / "foreign/run.json") << "{\"scene_file\": 3}";
+  r = run_cdmpm({"run", "--resume", dir / "foreign"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("run.json: expected an object"), std::string::npos) << r.output;
+}
+
 // Resuming with another frame or probe interval (--set time.frame_interval / probes.interval) continues on a
 // grid of the new interval from the resume time. The first version kept the index grid, (k + 1) dt: with a
 // shorter interval it put the next output in the past, the run stepped with a negative dt and blew up.
