@@ -67,8 +67,10 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     m.visit([&](const auto& model) { model.template fields<dim>(P, q, values); });
     for (size_t k = 0; k < cols.size(); ++k) more[cols[k]].f32[q] = values[k];
   }
-  std::vector<VtuField> fields = {vel, mat, pres, J, stress, id, mass, volume};
-  fields.insert(fields.end(), more.begin(), more.end());
+  // Moved, not copied: a frame's fields are the largest buffers of an output step.
+  std::vector<VtuField> fields;
+  for (VtuField* f : {&vel, &mat, &pres, &J, &stress, &id, &mass, &volume}) fields.push_back(std::move(*f));
+  for (VtuField& f : more) fields.push_back(std::move(f));
   VtuOptions options;
   options.compression = sim.scene.output.compress ? VtuCompression::ZLib : VtuCompression::None;
   options.positions = sim.scene.output.float32_positions ? VtuReal::Float32 : VtuReal::Float64;

@@ -1,12 +1,13 @@
 // reduction.h - the one interface through which every global quantity is combined across processes: the
-// largest speed and wave speed (time step), the stability check, energies and mass, probe values, rigid-body
-// sums and iceberg detection. Each caller first reduces over its own particles (OpenMP, in a fixed order
-// where the result must not depend on the thread count), then passes its partial result here.
+// largest speed and wave speed (time step), the stability check, probe values, energies and mass, and the
+// rigid-body sums. Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
+// must not depend on the thread count), then passes its partial result here.
 //
 // One process (this build): every function is the identity. A distributed build (docs/architecture.md) makes
 // them collective: max/min are exact in any order; sums are combined in rank order of a partition that
-// follows the global block order, so a result does not depend on how the work was split within a rank, and
-// gather() collects per-process records in rank order (iceberg detection needs all ice cells).
+// follows the global block order, so a result does not depend on how the work was split within a rank.
+// Not routed through it yet: iceberg detection (probe/icebergs.h), which needs every ice cell of the domain, a
+// gather rather than a reduction.
 #pragma once
 
 #include <vector>
@@ -20,9 +21,5 @@ template <class T>
 void sum(std::vector<T>&) {}
 template <class T>
 void max(std::vector<T>&) {}
-template <class T>
-void gather(std::vector<T>&) {}
-inline int rank() { return 0; }
-inline int ranks() { return 1; }
 
 }  // namespace cdmpm::global

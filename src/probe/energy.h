@@ -4,6 +4,7 @@
 
 #include "core/particles.h"
 #include "material/stress.h"
+#include "parallel/reduction.h"
 
 namespace cdmpm {
 
@@ -26,7 +27,7 @@ EnergyTotals energy_totals(const Particles<dim>& p, const std::vector<Material>&
     ge -= p.mass[q] * gravity.dot(p.x[q]);
     ee += particle_elastic_energy(materials[p.material[q]], p, q);
   }
-  return {m, ke, ge, ee};
+  return {global::sum(m), global::sum(ke), global::sum(ge), global::sum(ee)};
 }
 
 }  // namespace cdmpm

@@ -37,7 +37,6 @@ class WaveGauge final : public Probe<dim> {
     still_level_ = s[0];
     return true;
   }
-  const std::vector<double>& position() const { return position_; }
 
  private:
   double surface_height(const Simulation<dim>& sim) const {

@@ -23,6 +23,11 @@ class Progress {
  public:
   Progress(bool enabled, double t_begin, double end) : enabled_(enabled), tty_(isatty(fileno(stderr))), t_begin_(t_begin), end_(end) {}
   bool tty() const { return tty_; }
+  // The simulated time the run starts from (the remaining-time estimate extrapolates from it).
+  void start_at(double t_begin) {
+    t_begin_ = t_begin;
+    last_ = std::chrono::steady_clock::now();
+  }
   // Prints the line if enabled and (unless final) 2 s have passed since the last one.
   void update(long long step, double t, double dt, size_t particles, double particle_steps, double wall, bool final) {
     if (!enabled_ || (!final && std::chrono::steady_clock::now() - last_ < std::chrono::seconds(2))) return;

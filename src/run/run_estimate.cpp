@@ -9,6 +9,7 @@
 #include "grid/grid.h"
 #include "run/progress.h"
 #include "scene/scene_reader.h"
+#include "sim/time_step.h"
 
 namespace cdmpm {
 namespace {
@@ -22,15 +23,14 @@ double body_particles(const BodySpec& b, int dim, double dx) {
   return count;
 }
 
-// The fastest wave of any material at rest [m/s], and the smallest of the materials' own time-step limits [s].
-void material_speeds(const Scene& s, double& wave, double& own_dt) {
-  wave = 0;
-  own_dt = std::numeric_limits<double>::infinity();
+// The fastest wave of any material at rest [m/s] (stiffening state 1, material_model.h).
+double rest_wave_speed(const Scene& s) {
+  double wave = 0;
   for (const Material& m : s.materials)
     m.visit([&](const auto& model) {
       wave = std::max(wave, double(s.dim == 2 ? model.template wave_speed<2>(1) : model.template wave_speed<3>(1)));
-      own_dt = std::min(own_dt, double(model.stable_dt(static_cast<Real>(s.domain.dx), s.dim)));
     });
+  return wave;
 }
 
 std::string gigabytes(double bytes) {
@@ -59,10 +59,10 @@ RunEstimate estimate_run(const Scene& s) {
   for (int a = 0; a < s.dim; ++a)
     e.lattice_blocks *= std::ceil((std::ceil(s.domain.size[a] / dx) + 1 + 2 * Grid<2>::ghost) / Grid<2>::block_width);
   e.memory_bytes = e.particles * (s.dim == 3 ? 250 : 160) + 8 * e.lattice_blocks + 64e6;
-  double wave = 0, own_dt = 0;
-  material_speeds(s, wave, own_dt);
-  e.first_dt = std::min(s.time.wave_cfl * dx / std::max(wave, 1e-300), own_dt * s.time.wave_cfl);
-  if (s.time.max_dt > 0) e.first_dt = std::min(e.first_dt, s.time.max_dt);
+  // Every particle at rest: no speed limit, the materials' rest wave speeds.
+  const Real rdx = static_cast<Real>(dx);
+  e.first_dt = stable_time_step(s.time, rdx, Real(0), static_cast<Real>(rest_wave_speed(s)),
+                                material_time_step_limit(s.materials, rdx, s.dim));
   e.steps = std::ceil(s.time.end / e.first_dt);
   e.frames = s.output.frames ? std::floor(s.time.end / s.time.frame_interval + 1e-9) + 1 : 0;
   e.frame_bytes = e.frames * e.particles * (s.dim == 3 ? 40 : 25);

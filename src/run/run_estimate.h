@@ -6,8 +6,8 @@
 //
 // Memory: bytes_per_particle (3D 250 B, 2D 160 B: a particle's arrays, solids first, docs/performance.md,
 // plus bins, grid and frame buffers) times the particles, plus 8 B per block of the grid's lattice (the dense
-// block slot and bin tables), plus 64 MB for the program. First time step: the scene's time step rule with
-// every particle at rest (time.wave_cfl dx / the fastest material's rest wave speed, its own limits, max_dt).
+// block slot and bin tables), plus 64 MB for the program. First time step: the scene's time step rule
+// (sim/time_step.h) with every particle at rest (the materials' rest wave speeds and own limits, max_dt).
 // Wall time: particles x steps over the particle-steps per second measured on this machine's 2 cores
 // (2D 4 M/s, 3D 2 M/s, docs/performance.md), i.e. a rough guide, not a promise.
 #pragma once

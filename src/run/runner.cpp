@@ -38,13 +38,13 @@ class TimeLoop {
   TimeLoop(const Scene& scene, const RunOptions& opt)
       : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), files_(opt.out_dir, sim_, probes_, icebergs_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
-        e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)) {}
+        e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
 
   RunResult run() {
     if (opt_.resume) resume();
     else files_.start(opt_.command_line);
     times_.setup = elapsed();
-    Progress progress(opt_.progress, sim_.time(), scene_.time.end);
+    progress_.start_at(sim_.time());
     RunResult result{"completed", "", 0};
     const long long first_step = sim_.steps();
     while (sim_.time() < scene_.time.end) {
@@ -60,11 +60,11 @@ class TimeLoop {
         result = *stop;
         break;
       }
-      progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
+      progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
     if (result.status != "unstable") files_.checkpoint();
-    progress.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
+    progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
@@ -102,7 +102,7 @@ class TimeLoop {
     files_.write_probes();
     if (files_.sample_icebergs() && opt_.progress) {
       const auto& f = icebergs_.first_;
-      std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", isatty(fileno(stderr)) ? "\n" : "",
+      std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
                    f[0], f[1], f[2]);
     }
   }
@@ -147,6 +147,7 @@ class TimeLoop {
   OutputSchedule frames_, samples_;
   EnergyTotals e0_;
   RunTimes times_;
+  Progress progress_;
 };
 
 }  // namespace

@@ -38,6 +38,7 @@
 
 #include "core/particles.h"
 #include "material/material.h"
+#include "parallel/reduction.h"
 #include "scene/scene.h"
 
 namespace cdmpm {
@@ -161,6 +162,9 @@ class RigidBodies {
       first[b] += m * p.x[q].template cast<double>();
       momentum[b] += m * p.v[q].template cast<double>();
     }
+    global::sum(mass);
+    global::sum(first);
+    global::sum(momentum);
     std::vector<Vec<dim>> origin(nb);
     for (size_t b = 0; b < nb; ++b) {
       bodies[b].mass = mass[b];
@@ -177,6 +181,8 @@ class RigidBodies {
       L[b] += (p.mass[q] * (A::cross(r, p.v[q]) + D * A::axial2(p.C[q]))).template cast<double>();
       I[b] += A::inertia(p.mass[q], r, D).template cast<double>();
     }
+    global::sum(L);
+    global::sum(I);
     for (size_t b = 0; b < nb; ++b) {
       RigidBody<dim>& B = bodies[b];
       B.inertia = I[b].template cast<Real>();

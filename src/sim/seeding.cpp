@@ -43,7 +43,14 @@ class BodySeeder {
     for (int a = 0; a < dim; ++a) {
       lo_[a] = static_cast<int>(std::floor(body.shape.lower(a) / h_ - 0.5));
       hi_[a] = static_cast<int>(std::ceil(body.shape.upper(a) / h_ - 0.5));
+      centre_[a] = static_cast<Real>(0.5 * (body.shape.lower(a) + body.shape.upper(a)));
+      v0_[a] = body.velocity.empty() ? Real(0) : static_cast<Real>(body.velocity[a]);
     }
+    G_.setZero();
+    if (!body.velocity_gradient.empty())
+      for (int r = 0; r < dim; ++r)
+        for (int c = 0; c < dim; ++c) G_(r, c) = static_cast<Real>(body.velocity_gradient[r * dim + c]);
+    cell_volume_ = static_cast<Real>(std::pow(h_, dim));
   }
   double spacing() const { return h_; }
 
@@ -97,29 +104,15 @@ class BodySeeder {
       const InitialState<dim> st =
           mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0)); });
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
-      const Real V0 = static_cast<Real>(std::pow(h_, dim)) / st.J;
+      const Real V0 = cell_volume_ / st.J;
       Vec<dim> xp = x.template cast<Real>();
       if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
-      const Vec<dim> vp = velocity_at(xp);
+      // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
+      const Vec<dim> vp = v0_ + G_ * (xp - centre_);
       const MaterialId id = static_cast<MaterialId>(body_.material_index);
-      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, gradient(), st.F, st.alpha);
-      else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, gradient());
+      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha);
+      else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);
     }
-  }
-
-  // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
-  Vec<dim> velocity_at(const Vec<dim>& x) const {
-    Vec<dim> v0 = Vec<dim>::Zero(), centre;
-    for (int a = 0; a < dim && !body_.velocity.empty(); ++a) v0[a] = static_cast<Real>(body_.velocity[a]);
-    for (int a = 0; a < dim; ++a) centre[a] = static_cast<Real>(0.5 * (body_.shape.lower(a) + body_.shape.upper(a)));
-    return v0 + gradient() * (x - centre);
-  }
-  Mat<dim> gradient() const {
-    Mat<dim> G = Mat<dim>::Zero();
-    if (!body_.velocity_gradient.empty())
-      for (int r = 0; r < dim; ++r)
-        for (int c = 0; c < dim; ++c) G(r, c) = static_cast<Real>(body_.velocity_gradient[r * dim + c]);
-    return G;
   }
 
   const Scene& scene_;
@@ -131,6 +124,9 @@ class BodySeeder {
   int n_ = 1;
   double h_ = 1;
   IVec<dim> lo_, hi_;
+  Vec<dim> v0_, centre_;  // the body's initial velocity and the centre of its bounding box
+  Mat<dim> G_;            // its initial velocity gradient (also the particles' APIC matrix)
+  Real cell_volume_ = 1;  // h^dim, a particle's current volume
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "sim/advect.h"
 #include "sim/seeding.h"
 #include "sim/sinks.h"
+#include "sim/time_step.h"
 #include "transfer/g2p.h"
 #include "transfer/p2g.h"
 
@@ -30,11 +31,8 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s), materials(s.materials) {
     boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{domain_size, grid.dx}));
   seed_bodies<dim>(s, materials, boundaries, particles);
   rigid.init(s, materials, particles, grid.dx);
-  material_dt_ = no_time_step_limit;
-  for (const Material& m : materials) {
-    material_dt_ = std::min(material_dt_, m.visit([&](const auto& model) { return model.stable_dt(grid.dx, dim); }));
-    rigid_material_.push_back(m.traits().rigid);
-  }
+  material_dt_ = material_time_step_limit(materials, grid.dx, dim);
+  for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
 }
@@ -49,12 +47,7 @@ void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_refer
 
 template <int dim>
 Real Simulation<dim>::stable_dt() const {
-  const Real dx = grid.dx;
-  Real dt = material_dt_ * static_cast<Real>(scene.time.wave_cfl);
-  if (max_speed > 0) dt = std::min(dt, static_cast<Real>(scene.time.cfl) * dx / max_speed);
-  if (max_wave_speed > 0) dt = std::min(dt, static_cast<Real>(scene.time.wave_cfl) * dx / max_wave_speed);
-  if (scene.time.max_dt > 0) dt = std::min(dt, static_cast<Real>(scene.time.max_dt));
-  return dt;
+  return stable_time_step(scene.time, grid.dx, max_speed, max_wave_speed, material_dt_);
 }
 
 template <int dim>

@@ -6,8 +6,9 @@
 //   --constitutive_update, rigid_projection, advect, sinks--> particles --reductions--> next time step
 // Each phase is a function in the file of its concept; the step below only sequences them and times each.
 // The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, wave_cfl * the materials' own limits
-// (viscosity), max_dt), where c_max is the largest wave speed of any material present. The simulation owns
-// its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output time).
+// (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h).
+// The simulation owns its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output
+// time).
 #pragma once
 
 #include <memory>
