@@ -1,6 +1,6 @@
 // probe.h - a point or integral measurement sampled into probes.csv at a fixed interval: the interface every
 // probe type implements, and the registry that builds them (one file per type: probe/wave_gauge.cpp,
-// front.cpp, pressure_probe.cpp, energy_probe.cpp, rigid_probe.cpp; the list in probe/registry.cpp).
+// section.cpp, front.cpp, pressure_probe.cpp, energy_probe.cpp, rigid_probe.cpp; the list in probe/registry.cpp).
 //
 // A probe reads its own scene keys when it is built (so the loader can check a scene by building its probes
 // once), may measure the initial state (init), writes one or more columns per sample, and saves and restores

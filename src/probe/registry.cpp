@@ -9,6 +9,7 @@ using ProbeFactory = std::unique_ptr<Probe<dim>> (*)(const SceneReader&, const N
 
 #define CDMPM_DECLARE(f) template <int dim> std::unique_ptr<Probe<dim>> f(const SceneReader&, const Node&, const Scene&);
 CDMPM_DECLARE(make_wave_gauge)
+CDMPM_DECLARE(make_section)
 CDMPM_DECLARE(make_front)
 CDMPM_DECLARE(make_pressure_probe)
 CDMPM_DECLARE(make_kinetic_energy)
@@ -31,6 +32,7 @@ struct Entry {
 #define CDMPM_PROBE(name, factory) Entry{name, factory<2>, factory<3>}
 const Entry kRegistry[] = {
     CDMPM_PROBE("wave_gauge", make_wave_gauge),
+    CDMPM_PROBE("section", make_section),
     CDMPM_PROBE("front", make_front),
     CDMPM_PROBE("pressure", make_pressure_probe),
     CDMPM_PROBE("kinetic_energy", make_kinetic_energy),
