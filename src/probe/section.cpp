@@ -20,10 +20,13 @@
 // eta = NaN and d = u = q = 0.
 //
 // Deterministic for any thread count: a parallel pass only flags the particles near the line (a per-particle
-// write), then each station sums its particles serially in particle index order, in double; maxima and minima
-// are exact in any order.
+// write), a serial pass lists them per station, then each station sums its particles serially in particle index
+// order, in double; maxima and minima are exact in any order.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "core/bspline.h"
 #include "parallel/reduction.h"
@@ -130,9 +133,11 @@ class Section final : public Probe<dim> {
       for (int a = 0; a < H && in; ++a) in = P.x[q][a] >= lo[a] && P.x[q][a] <= hi[a];
       near[q] = in;
     }
-    std::vector<uint32_t> list;
-    for (size_t q = 0; q < n; ++q)
-      if (near[q]) list.push_back(static_cast<uint32_t>(q));
+    // Each near particle goes to the list of every station whose support may hold it (the stations k/(S-1)
+    // along the line whose parameter lies in the particle's interval, widened by one station and a relative
+    // 1e-6 of the support for rounding: particles outside the support add zero), so a station visits only its
+    // own particles, in index order.
+    const std::vector<std::vector<uint32_t>> lists = station_lists(P, near, 1.5 * dx * (1 + 1e-6));
 
     std::vector<Column> out(stations_.size());
     const long ns = static_cast<long>(stations_.size());
@@ -140,7 +145,7 @@ class Section final : public Probe<dim> {
     for (long k = 0; k < ns; ++k) {
       const Point& X = stations_[k];
       Column& c = out[k];
-      for (const uint32_t q : list) {
+      for (const uint32_t q : lists[k]) {
         double w = 1;
         bool column = true;
         for (int a = 0; a < H; ++a) {
@@ -168,6 +173,33 @@ class Section final : public Probe<dim> {
       if (c.sw > 0) c.u = c.swv / c.sw;
     }
     return out;
+  }
+
+  // The near particles (near[q] != 0) within `reach` of each station on every horizontal axis, or a few more.
+  std::vector<std::vector<uint32_t>> station_lists(const Particles<dim>& P, const std::vector<uint8_t>& near,
+                                                   double reach) const {
+    const Point A = stations_.front(), D = stations_.back() - A;  // the line: A + f D, f in [0, 1]
+    const int last = static_cast<int>(stations_.size()) - 1;
+    std::vector<std::vector<uint32_t>> lists(stations_.size());
+    for (size_t q = 0; q < near.size(); ++q) {
+      if (!near[q]) continue;
+      double f_lo = 0, f_hi = 1;
+      for (int a = 0; a < H; ++a) {
+        const double p = P.x[q][a] - A[a];
+        if (D[a] == 0) {
+          if (std::abs(p) > reach) f_lo = 2;  // off the line on this axis: no station
+        } else {
+          const double f1 = (p - reach) / D[a], f2 = (p + reach) / D[a];
+          f_lo = std::max(f_lo, std::min(f1, f2));
+          f_hi = std::min(f_hi, std::max(f1, f2));
+        }
+      }
+      if (f_lo > f_hi) continue;
+      const int k0 = std::max(0, static_cast<int>(std::floor(f_lo * last)) - 1);
+      const int k1 = std::min(last, static_cast<int>(std::ceil(f_hi * last)) + 1);
+      for (int k = k0; k <= k1; ++k) lists[k].push_back(static_cast<uint32_t>(q));
+    }
+    return lists;
   }
 
   std::vector<Point> stations_;  // horizontal coordinates of each station
