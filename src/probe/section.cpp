@@ -14,10 +14,10 @@
 //         the station: for a velocity linear across the kernel it is exact at X (N is symmetric), and being a
 //         ratio it does not jump when particles enter or leave the column, so q has no counting noise;
 //   q     unit-width volume flux [m^2/s], q = d u_bar, the depth integral of the horizontal velocity
-//         (Stoker 1957, sec. 10.2: the long-wave continuity equation eta_t + (d u_bar)_x = 0).
+//         (the shallow-water continuity equation eta_t + div(d u_bar) = 0; Stoker 1957, Water Waves, part III).
 // In 3D u, v and qx, qy are the components along the domain's x and y axes (global, as a shallow-water grid
 // takes them; the flux normal to the line is (qx, qy) . n). A station with no water in its column gives
-// eta = NaN and d = u = q = 0.
+// eta = NaN and d = u = q = 0; one dry at t = 0 has no still level (eta always NaN) unless still_level is given.
 //
 // Deterministic for any thread count: a parallel pass only flags the particles near the line (a per-particle
 // write), a serial pass lists them per station, then each station sums its particles serially in particle index
@@ -88,7 +88,7 @@ class Section final : public Probe<dim> {
   void init(const Simulation<dim>& sim) override {
     if (given_) return;
     const std::vector<Column> c = measure(sim);
-    for (size_t k = 0; k < stations_.size(); ++k) still_[k] = c[k].top;
+    for (size_t k = 0; k < stations_.size(); ++k) still_[k] = std::isfinite(c[k].top) ? c[k].top : kNaN;
   }
   void sample(const Simulation<dim>& sim, std::vector<double>& out) const override {
     const std::vector<Column> c = measure(sim);
@@ -119,8 +119,7 @@ class Section final : public Probe<dim> {
   std::vector<Column> measure(const Simulation<dim>& sim) const {
     const auto& P = sim.particles;
     const double dx = sim.grid.dx;
-    // Particles within the B-spline support (1.5 dx) of the line's bounding box, flagged in parallel and listed
-    // in index order.
+    // Particles within the B-spline support (1.5 dx) of the line's bounding box, flagged in parallel.
     Point lo = stations_.front(), hi = stations_.front();
     for (const Point& s : stations_) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
     lo.array() -= 1.5 * dx;
