@@ -6,6 +6,7 @@
 //   - linear long-wave theory: u_bar = c eta / h, c = sqrt(g h), within 10 % (the bound), at the crest
 //     and as the regression of u_bar on eta over the wave's passage;
 //   - 3D: the stations of a line, a uniform current's exact answer and the same mass balance across a channel;
+//   - a dry station (eta NaN, d = u = q = 0);
 //   - input errors (exit code 2 through the program);
 //   - the program's probes.csv: the same bytes on 1 and 2 threads and after a resume.
 #include <gtest/gtest.h>
@@ -205,6 +206,27 @@ TEST(SectionProbe, Line3DStationsReadAUniformCurrent) {
   ASSERT_TRUE(probes.load_state({5, h + 0.1, h + 0.1, h + 0.1, h + 0.1, h + 0.1}));
   const std::vector<double> raised = probes.sample(sim);
   for (int k = 0; k < 5; ++k) EXPECT_NEAR(raised[6 * k], -0.1, 1e-12) << k;
+}
+
+// A station over a dry bed: eta NaN (no still level at t = 0), d = u = q = 0; with still_level given, eta is
+// still NaN while dry.
+TEST(SectionProbe, DryStationReadsNaNAndZeros) {
+  for (const bool given : {false, true}) {
+    nlohmann::json section = {{"position", {3.5}}};
+    if (given) section["still_level"] = 1.0;
+    nlohmann::json j = tank(2, 1, 0.1, 1, 4, 0, 0.1, section);
+    j["bodies"][1]["shape"]["max"] = {3.0, 1.0};  // the water ends at x = 3, the section stands at 3.5
+    const Scene scene = scene_from_json(j, "<section_dry>");
+    Simulation<2> sim(scene);
+    Probes<2> probes(scene, sim);
+    const std::vector<double> row = probes.sample(sim);
+    ASSERT_EQ(row.size(), 4u);
+    EXPECT_TRUE(std::isnan(row[0])) << given;
+    EXPECT_EQ(row[1], 0) << given;
+    EXPECT_EQ(row[2], 0) << given;
+    EXPECT_EQ(row[3], 0) << given;
+    EXPECT_EQ(std::isnan(probes.save_state()[1]), !given);
+  }
 }
 
 // 3D mass balance across a channel of width W = h: a box a = h / 4 high (two particle layers), w = 2 h long
