@@ -1,46 +1,67 @@
 #!/usr/bin/python3
-"""plot_probes.py - plot columns of a cdmpm probes.csv against time.
+"""plot_probes.py - plot the columns of a cdmpm run's probes.csv against time, one panel per column, each axis
+labelled with its quantity and unit (from the probe types in the run's scene.resolved.json; in 2D, extensive
+quantities are per metre of width).
 
-    tools/plot_probes.py out/probes.csv --columns p_bottom ke --png out.png
-
-Each column gets its own panel (probes have different units); without --columns, all columns are plotted.
-Needs numpy and matplotlib (e.g. /usr/bin/python3).
+    /usr/bin/python3 tools/plot_probes.py RUN_DIR [--columns p_bottom ke] [--out FOLDER]
+The figure goes to FOLDER/probes.png (default: RUN_DIR/plots); a folder holding committed files is refused
+(--force overrides). Needs numpy and matplotlib (Debian's /usr/bin/python3).
 """
 import argparse
+import os
 import sys
 
-import numpy as np
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_style import fail, output_folder, probe_units  # noqa: E402
+
+TOOL = "plot_probes"
 
 
 def main():
-    p = argparse.ArgumentParser(description="Plot columns of a cdmpm probes.csv against time.")
-    p.add_argument("csv", help="probes.csv written by cdmpm run")
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("run", help="a cdmpm run folder (with probes.csv), or a probes.csv")
     p.add_argument("--columns", nargs="+", help="columns to plot (default: all)")
-    p.add_argument("--png", default="probes.png", help="output image (default: probes.png)")
+    p.add_argument("--out", help="folder for probes.png (default: the run folder's plots/)")
+    p.add_argument("--force", action="store_true", help="allow a folder with committed files")
     args = p.parse_args()
-
-    data = np.genfromtxt(args.csv, delimiter=",", names=True)
+    try:
+        import numpy as np
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as e:
+        fail(TOOL, f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
+    run = args.run if os.path.isdir(args.run) else os.path.dirname(os.path.abspath(args.run))
+    csv = os.path.join(args.run, "probes.csv") if os.path.isdir(args.run) else args.run
+    if not os.path.isfile(csv):
+        fail(TOOL, f"{csv}: no such file (a run without probes writes none)")
+    try:
+        data = np.genfromtxt(csv, delimiter=",", names=True)
+    except ValueError as e:
+        fail(TOOL, f"{csv}: not a probes table: {e}")
+    if data.dtype.names is None or "time" not in data.dtype.names:
+        fail(TOOL, f"{csv}: no header with a time column")
     names = [n for n in data.dtype.names if n != "time"]
     columns = args.columns or names
     unknown = [c for c in columns if c not in names]
     if unknown:
-        print(f"plot_probes: no column {', '.join(unknown)} in {args.csv} (has: {', '.join(names)})", file=sys.stderr)
-        return 2
-
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+        fail(TOOL, f"no column {', '.join(unknown)} in {csv} (has: {', '.join(names)})")
+    if not columns:
+        fail(TOOL, f"{csv}: no probe columns")
+    units = probe_units(run)
+    folder = output_folder(TOOL, args.out or os.path.join(run, "plots"), args.force)
+    data = np.atleast_1d(data)
     fig, axes = plt.subplots(len(columns), 1, sharex=True, squeeze=False, figsize=(7, 1.0 + 2.2 * len(columns)))
     for ax, c in zip(axes[:, 0], columns):
-        ax.plot(data["time"], data[c], lw=1.2)
-        ax.set_ylabel(c)
+        ax.plot(data["time"], data[c], lw=1.2, label=c)
+        ax.set_ylabel(units.get(c, c), fontsize=8)
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time [s]")
-    axes[0, 0].set_title(args.csv)
+    axes[0, 0].set_title(csv, fontsize=8)
     fig.tight_layout()
-    fig.savefig(args.png, dpi=120)
-    print(f"plot: {args.png}")
+    png = os.path.join(folder, "probes.png")
+    fig.savefig(png, dpi=120)
+    print(png)
     return 0
 
 

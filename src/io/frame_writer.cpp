@@ -2,6 +2,7 @@
 #include "io/frame_writer.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "io/vtu_writer.h"
@@ -46,7 +47,10 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
   VtuField volume{"volume", 1, std::vector<float>(n), {}, {}};
   const ExtraFields extra(sim.materials);
   std::vector<VtuField> more;
-  for (const std::string& name : extra.names) more.push_back({name, 1, std::vector<float>(n, 0.f), {}, {}});
+  // A field of some materials only (damage, alpha, p0 of ice) is NaN on the particles of the others, so water
+  // is not mistaken for intact ice when a frame is coloured by damage (ParaView draws NaN in its NaN colour).
+  constexpr float absent = std::numeric_limits<float>::quiet_NaN();
+  for (const std::string& name : extra.names) more.push_back({name, 1, std::vector<float>(n, absent), {}, {}});
 #pragma omp parallel for schedule(static)
   for (size_t q = 0; q < n; ++q) {
     const Material& m = sim.materials[P.material[q]];

@@ -2,8 +2,8 @@
 // velocity [m/s], material (index into the scene's materials, whose names the file's field data
 // `material_names` lists), pressure [Pa], J, the Cauchy stress tensor `stress` [Pa] (3x3 row-major, zero-padded
 // in 2D, material/stress.h), the 64-bit particle `id`, `mass` [kg] and current `volume` [m^3; m^2 in 2D], then
-// the extra fields of the materials present (material_model.h field_names; ice: damage, alpha, p0), zero on
-// particles of materials without them. The frame's time is field data TimeValue [s]. zlib-compressed unless
+// the extra fields of the materials present (material_model.h field_names; ice: damage, alpha, p0), NaN on
+// particles of materials without them (water is not intact ice). The frame's time is field data TimeValue [s]. zlib-compressed unless
 // the scene's output.compress is false; positions in single precision with output.positions = "float32".
 #pragma once
 

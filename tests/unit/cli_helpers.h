@@ -47,9 +47,10 @@ inline std::string quote(const std::string& s) {
   return q + "'";
 }
 
-inline CliResult run_cdmpm(const std::vector<std::string>& args) {
+// Runs `program` with `args` (each quoted for the shell); returns its exit code and its stdout and stderr.
+inline CliResult run_program(const std::string& program, const std::vector<std::string>& args) {
   TempDir log;
-  std::string cmd = quote(CDMPM_BINARY);
+  std::string cmd = quote(program);
   // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on " " + quote(a).
   for (const auto& a : args) cmd.append(" ").append(quote(a));
   cmd.append(" > ").append(quote(log / "out.txt")).append(" 2>&1");
@@ -62,6 +63,8 @@ inline CliResult run_cdmpm(const std::vector<std::string>& args) {
   r.output = ss.str();
   return r;
 }
+
+inline CliResult run_cdmpm(const std::vector<std::string>& args) { return run_program(CDMPM_BINARY, args); }
 
 // Runs `scene` with the arguments `common` three ways, for a bitwise comparison: into dir/full to t_end on
 // `threads` threads, into dir/other to t_end on `other_threads`, and into dir/half to t_half, then resumed there

@@ -3,7 +3,8 @@
 // seeding prescribes (src/sim/seeding.cpp), which the stress must reproduce:
 //   ice   (lithostatic, laterally free): sigma_yy = -rho_i g (H - y), sigma_xx = sigma_xy = 0;
 //   water (hydrostatic):                 sigma = -p I with p = rho_w g (h - y);
-// and for every particle the frame's "pressure" is -tr(sigma)/2.
+// and for every particle the frame's "pressure" is -tr(sigma)/2; ice is intact (damage 0) and water has no
+// damage (NaN: the field belongs to ice).
 // Tolerance: the seeding's Newton solve stops at a residual of 64 eps kappa (ice), the equation of state is
 // inverted to the same relative precision (water), and the frame stores float32 (relative 2^-24).
 #include <gtest/gtest.h>
@@ -32,6 +33,7 @@ TEST(Frames, StressTensorIsTheSeededEquilibriumState) {
   const auto mat = vtu.array<int32_t>("material", n);
   const auto pres = vtu.array<float>("pressure", n);
   const auto S = vtu.array<float>("stress", 9 * n);
+  const auto damage = vtu.array<float>("damage", n);
 
   const double g = 9.81, H = scene["parameters"]["H"], h = scene["parameters"]["water_depth"];
   const auto& ice = scene["materials"]["ice"];
@@ -56,11 +58,13 @@ TEST(Frames, StressTensorIsTheSeededEquilibriumState) {
       EXPECT_NEAR(s[4], -rho_i * g * (H - y), tol) << "ice particle " << q << " at y = " << y;
       EXPECT_NEAR(s[0], 0.0, tol) << "ice particle " << q;
       EXPECT_NEAR(s[1], 0.0, tol) << "ice particle " << q;
+      EXPECT_EQ(damage[q], 0.f) << "ice particle " << q << ": intact at seeding";
     } else {  // water
       ++n_water;
       EXPECT_NEAR(s[0], -rho_w * g * (h - y), tol) << "water particle " << q << " at y = " << y;
       EXPECT_EQ(s[0], s[4]) << "water particle " << q;
       EXPECT_EQ(s[1], 0.f) << "water particle " << q;
+      EXPECT_TRUE(std::isnan(damage[q])) << "water particle " << q << ": damage is an ice field, absent (NaN) on water";
     }
   }
   EXPECT_GT(n_ice, 100u);

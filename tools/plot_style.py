@@ -1,0 +1,123 @@
+"""plot_style.py - what every cdmpm plotting tool shares, so their figures read alike and they behave alike:
+
+  fail(tool, message)           one line on stderr and exit status 2, instead of a traceback;
+  output_folder(tool, folder)   creates the folder the user named; refuses a folder inside the repository's
+                                committed tree (docs/, scenes/, ...) unless --force, so no tool overwrites
+                                committed figures by default;
+  robust_range(values)          a colour range from the 1st to the 99th percentile, so a few extreme particles
+                                (ice at MPa beside water at kPa) do not wash out the rest;
+  ICE, WATER                    ice coloured by damage from slate grey (intact, readable on white) through
+                                amber to dark red (broken); water in blue;
+  ice_mask(fields, meta)        which particles are ice: those whose damage is a number (frames write NaN on
+                                materials without damage), or by the material names of older frames;
+  probe_units(run_dir)          axis label with units for every column of probes.csv, from the probe types in
+                                the run's scene.resolved.json (2D runs: extensive quantities per metre of width).
+"""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WATER = "#3a7bd5"
+
+
+def fail(tool, message):
+    print(f"{tool}: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def _tracked_files_under(folder):
+    """Committed files of the repository inside FOLDER (empty if FOLDER is outside it or git is missing)."""
+    folder = os.path.realpath(folder)
+    if os.path.commonpath([folder, REPO]) != REPO:
+        return []
+    try:
+        out = subprocess.run(["git", "-C", REPO, "ls-files", "--", os.path.relpath(folder, REPO)],
+                             capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return []
+    return out.split()
+
+
+def output_folder(tool, folder, force=False):
+    """Creates FOLDER for a tool's outputs and returns it; refuses one that holds committed files."""
+    tracked = _tracked_files_under(folder)
+    if tracked and not force:
+        fail(tool, f"{folder} holds committed files ({tracked[0]}, ...): name another folder, "
+                   "or add --force to replace the committed figures on purpose")
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as e:
+        fail(tool, f"cannot create output folder {folder}: {e.strerror}")
+    return folder
+
+
+def robust_range(values, lo=1.0, hi=99.0):
+    """(vmin, vmax): the LO-th and HI-th percentiles of the finite VALUES (a non-empty range)."""
+    v = np.asarray(values, dtype=float)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return 0.0, 1.0
+    a, b = np.percentile(v, [lo, hi])
+    if b <= a:
+        a, b = a - 0.5 * max(abs(a), 1.0), b + 0.5 * max(abs(b), 1.0)
+    return float(a), float(b)
+
+
+def ice_colormap():
+    from matplotlib.colors import LinearSegmentedColormap
+    return LinearSegmentedColormap.from_list("ice_damage", ["#5f6f80", "#e0a030", "#9b0000"])
+
+
+def ice_mask(fields, meta, n):
+    """Boolean mask of the ice particles of a frame."""
+    if "damage" in fields:
+        d = np.asarray(fields["damage"], dtype=float)
+        if np.isnan(d).any():
+            return ~np.isnan(d)
+    names = meta.get("material_names") if meta else None
+    if names is not None and "material" in fields:
+        ice_ids = [k for k, name in enumerate(names) if "ice" in name.lower()]
+        return np.isin(fields["material"], ice_ids)
+    return np.zeros(n, dtype=bool)
+
+
+# Units of each probe type's columns: (quantity, unit in 2D, unit in 3D).
+_PROBE_UNITS = {
+    "wave_gauge": ("surface elevation", "m", "m"),
+    "front": ("front position", "m", "m"),
+    "pressure": ("pressure", "Pa", "Pa"),
+    "kinetic_energy": ("kinetic energy", "J/m", "J"),
+    "gravitational_energy": ("gravitational energy", "J/m", "J"),
+    "elastic_energy": ("elastic energy", "J/m", "J"),
+    "total_energy": ("total energy", "J/m", "J"),
+    "mass": ("mass", "kg/m", "kg"),
+    "rigid_position": ("position", "m", "m"),
+    "rigid_velocity": ("velocity", "m/s", "m/s"),
+    "rigid_angle": ("angle", "rad", "rad"),
+}
+
+
+def probe_units(run_dir):
+    """{column: axis label with units} for the probes of the run in RUN_DIR (empty if it has no resolved scene)."""
+    path = os.path.join(run_dir, "scene.resolved.json")
+    try:
+        scene = json.load(open(path))
+    except (OSError, ValueError):
+        return {}
+    dim = scene.get("dim", 2)
+    labels = {}
+    probes = scene.get("probes", {})
+    for p in probes.get("list", []) if isinstance(probes, dict) else probes:
+        name, kind = p.get("name"), p.get("type")
+        quantity, u2, u3 = _PROBE_UNITS.get(kind, (kind, "", ""))
+        unit = u2 if dim == 2 else u3
+        label = f"{name}: {quantity}" + (f" [{unit}]" if unit else "")
+        labels[name] = label
+        if kind in ("rigid_position", "rigid_velocity"):
+            for a in "xyz"[:dim]:
+                labels[f"{name}_{a}"] = f"{name} {a}: {quantity} [{unit}]"
+    return labels
