@@ -7,7 +7,8 @@ REF_DIR and NEW_DIR are either two run folders (--out of `cdmpm run`) or two fol
 OUTDIR/ref and OUTDIR/new of tools/check_bitwise.sh): then every run folder present in both is compared, and one
 present in only one of them is a difference. Per run folder it checks:
 
-  - probes.csv, icebergs.csv and waves.csv: byte for byte (the first differing line is printed);
+  - probes.csv, icebergs.csv and waves.csv: byte for byte (the first differing line is printed); the hazard
+    products likewise when both runs wrote them;
   - particles.pvd: the same frame list (file names and the bits of every time);
   - every frame particles_NNNN.vtu, read through tools/vtu.py (so any encoding vtu.py reads): the particle count,
     the points, and every point-data array present in BOTH frames: the same type, shape and bits (two NaNs are
@@ -32,6 +33,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtu import read_pvd, read_vtu  # noqa: E402
 
 TEXT_FILES = ("probes.csv", "icebergs.csv", "waves.csv")
+# The hazard products (docs/scenes.md#hazard): compared byte for byte when both runs wrote them; a file only one
+# run wrote (a build from before them) is listed, not counted as a difference.
+HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
+                "inundation_depth.asc")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
                 "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file"}
@@ -229,6 +234,11 @@ def compare_run(a, b, name, verbose):
     ok = True
     for f in TEXT_FILES:
         ok &= compare_text(f, a, b, report)
+    for f in HAZARD_FILES:
+        if os.path.exists(os.path.join(a, f)) and os.path.exists(os.path.join(b, f)):
+            ok &= compare_text(f, a, b, report)
+        elif os.path.exists(os.path.join(a, f)) or os.path.exists(os.path.join(b, f)):
+            report(f"  {f}: only in {'REF' if os.path.exists(os.path.join(a, f)) else 'NEW'} (not compared)")
     ok &= compare_frames(a, b, report, stats)
     ok &= compare_summary(a, b, report, stats)
     verdict = "IDENTICAL" if ok else "DIFFERENT"

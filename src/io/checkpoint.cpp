@@ -10,7 +10,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '7'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '8'};
 constexpr uint64_t kMaxString = 4096;  // longest string field (frame file names, fingerprint section names)
 
 // Writes and keeps the CRC-32 of everything written.
@@ -67,7 +67,7 @@ uint64_t check_file(std::ifstream& is, const std::string& path) {
   if (magic[7] != kMagic[7])
     throw CheckpointError(path + ": checkpoint format CDMPMCK" + std::string(1, magic[7]) +
                           " was written by another cdmpm version (this one reads CDMPMCK" + std::string(1, kMagic[7]) +
-                          ", which adds a checksum and the scene fingerprint); rerun the scene without --resume");
+                          ", which adds the hazard record); rerun the scene without --resume");
   uint32_t stored = 0;
   std::ifstream tail(path, std::ios::binary);
   tail.seekg(static_cast<std::streamoff>(size - 4));
@@ -100,6 +100,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod(m.icebergs_csv_bytes);
     w.vec(m.first_iceberg);
     w.vec(m.rigid_bodies);
+    w.vec(m.hazard);
     p.for_each_array([&](auto& a) { w.vec(a); });
     p.for_each_solid_array([&](auto& a) { w.vec(a); });
     const uint32_t crc = w.crc;
@@ -133,6 +134,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   r.pod(m.icebergs_csv_bytes);
   r.vec(m.first_iceberg, "first iceberg");
   r.vec(m.rigid_bodies, "rigid bodies");
+  r.vec(m.hazard, "hazard record");
   auto read_arrays_of = [&](uint64_t count) {
     return [&, count](auto& a) {
       using T = typename std::decay_t<decltype(a)>::value_type;

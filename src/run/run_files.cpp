@@ -15,8 +15,9 @@ namespace cdmpm {
 namespace fs = std::filesystem;
 
 template <int dim>
-RunFiles<dim>::RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs)
-    : out_(out_dir), sim_(sim), probes_(probes), icebergs_(icebergs) {}
+RunFiles<dim>::RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs,
+                        HazardMap<dim>& hazard)
+    : out_(out_dir), sim_(sim), probes_(probes), icebergs_(icebergs), hazard_(hazard) {}
 
 template <int dim>
 void RunFiles<dim>::open_tables(bool append) {
@@ -53,6 +54,7 @@ void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
   csv_ << probes_.csv_header() << '\n';
   write_probes();
   write_frame();
+  hazard_.init(sim_);
 }
 
 template <int dim>
@@ -74,6 +76,8 @@ void RunFiles<dim>::resume() {
     throw std::runtime_error(ckpt + ": checkpoint holds the state of other probes than the scene's");
   if (!sim_.rigid.load(meta.rigid_bodies))
     throw std::runtime_error(ckpt + ": checkpoint holds the state of another set of rigid bodies than the scene's");
+  if (!hazard_.load_state(meta.hazard))
+    throw std::runtime_error(ckpt + ": checkpoint holds a hazard record that does not fit the scene's columns");
   icebergs_.first_ = meta.first_iceberg;
   restore_output_size(path("probes.csv"), meta.probes_csv_bytes);
   if (icebergs_.active()) restore_output_size(path("icebergs.csv"), meta.icebergs_csv_bytes);
@@ -111,6 +115,7 @@ void RunFiles<dim>::checkpoint() {
   meta.first_iceberg = icebergs_.first_;
   meta.rigid_bodies = sim_.rigid.save();
   meta.probe_state = probes_.save_state();
+  meta.hazard = hazard_.save_state();
   write_checkpoint(path("checkpoint.bin").string(), sim_.particles, meta);
 }
 

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <string>
 
+#include "hazard/hazard_map.h"
 #include "io/checkpoint.h"
 #include "probe/iceberg_tracker.h"
 #include "probe/probes.h"
@@ -25,11 +26,12 @@ namespace cdmpm {
 template <int dim>
 class RunFiles {
  public:
-  RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs);
+  RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs,
+           HazardMap<dim>& hazard);
   // Creates the output files (run.json records `command_line`) and writes the initial probe sample, frame and
-  // icebergs.
+  // icebergs; the hazard record takes its initial state.
   void start(const std::vector<std::string>& command_line);
-  // Loads the checkpoint into the simulation, probes and tracker and reopens the files for appending.
+  // Loads the checkpoint into the simulation, probes, tracker and hazard record and reopens the files for appending.
   void resume();
 
   void write_probes();
@@ -50,6 +52,7 @@ class RunFiles {
   Simulation<dim>& sim_;
   Probes<dim>& probes_;
   IcebergTracker<dim>& icebergs_;
+  HazardMap<dim>& hazard_;
   std::ofstream csv_, bergs_;
 };
 

@@ -1,6 +1,7 @@
 // runner.cpp - the time loop (see runner.h). Output files under --out: particles_NNNN.vtu + particles.pvd
 // (frames), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
-// waves.csv for scenes with wave gauges (probe/wave_report.h).
+// waves.csv for scenes with wave gauges (probe/wave_report.h), the hazard products for scenes with a fluid
+// (hazard/hazard_report.h).
 #include "run/runner.h"
 
 #include <omp.h>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "hazard/hazard_report.h"
 #include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
@@ -36,7 +38,8 @@ template <int dim>
 class TimeLoop {
  public:
   TimeLoop(const Scene& scene, const RunOptions& opt)
-      : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), files_(opt.out_dir, sim_, probes_, icebergs_),
+      : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
+        files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
         e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
 
@@ -68,7 +71,8 @@ class TimeLoop {
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
-    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_);
+    const nlohmann::json hazard = hazard_.active() ? write_hazard_report(opt_.out_dir, hazard_, scene_) : nlohmann::json();
+    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
     return result;
   }
 
@@ -92,6 +96,7 @@ class TimeLoop {
     if (hit) sim_.step_until(target);
     else sim_.step(dt);
     if (auto bad = sim_.check_state()) return bad;
+    hazard_.sample(sim_);
     if (hit && target == next_sample) sample();
     if (hit && target == next_frame) frame();
     return std::nullopt;
@@ -143,6 +148,7 @@ class TimeLoop {
   Simulation<dim> sim_;
   Probes<dim> probes_;
   IcebergTracker<dim> icebergs_;
+  HazardMap<dim> hazard_;
   RunFiles<dim> files_;
   OutputSchedule frames_, samples_;
   EnergyTotals e0_;

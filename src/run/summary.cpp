@@ -22,7 +22,8 @@ nlohmann::json energy_json(const EnergyTotals& e) {
 
 template <int dim>
 void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
-                   const EnergyTotals& e0, const RunTimes& t, const RunResult& result, const RunOptions& options) {
+                   const EnergyTotals& e0, const RunTimes& t, const RunResult& result, const RunOptions& options,
+                   const nlohmann::json& hazard) {
   const Scene& scene = sim.scene;
   const std::filesystem::path out(out_dir);
   const EnergyTotals e1 = energy_totals(sim.particles, sim.materials, sim.gravity);
@@ -51,6 +52,12 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
   s["energy_initial"] = energy_json(e0);
   if (icebergs.active()) s["first_iceberg"] = icebergs.summary();
   s.update(wave_report(scene, (out / "probes.csv").string(), (out / "waves.csv").string()));
+  if (!hazard.is_null()) s["hazard"] = hazard;
+  if (scene.georeference.given) {
+    const GeoreferenceSpec& g = scene.georeference;
+    s["georeference"] = {{"easting", g.easting}, {"northing", g.northing}};
+    if (dim == 2) s["georeference"]["azimuth"] = g.azimuth;
+  }
   s["status"] = result.status;
   s["reason"] = result.reason;
   s["resumed"] = options.resume;
@@ -64,8 +71,10 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
 }
 
 template void write_summary<2>(const std::string&, const Simulation<2>&, const IcebergTracker<2>&, const EnergyTotals&,
-                               const RunTimes&, const RunResult&, const RunOptions&);
+                               const RunTimes&, const RunResult&, const RunOptions&,
+                               const nlohmann::json&);
 template void write_summary<3>(const std::string&, const Simulation<3>&, const IcebergTracker<3>&, const EnergyTotals&,
-                               const RunTimes&, const RunResult&, const RunOptions&);
+                               const RunTimes&, const RunResult&, const RunOptions&,
+                               const nlohmann::json&);
 
 }  // namespace cdmpm

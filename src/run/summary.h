@@ -2,10 +2,11 @@
 // its resolved parameters, particles, steps, simulated and wall time, particle-steps per second (overall and
 // while stepping), the wall time of each phase of the step (phase_seconds, sim/phases.h), peak memory and
 // bytes per particle, mass change, energies at the start and the end, the first iceberg, the wave report of
-// the gauges (probe/wave_report.h), status and reason, threads, precision, version, git commit, the --set values
+// the gauges (probe/wave_report.h), the hazard entry (hazard/hazard_report.h), the georeference, status and reason, threads, precision, version, git commit, the --set values
 // and the command line.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "probe/energy.h"
@@ -23,6 +24,7 @@ struct RunTimes {
 
 template <int dim>
 void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
-                   const EnergyTotals& e0, const RunTimes& times, const RunResult& result, const RunOptions& options);
+                   const EnergyTotals& e0, const RunTimes& times, const RunResult& result, const RunOptions& options,
+                   const nlohmann::json& hazard);
 
 }  // namespace cdmpm

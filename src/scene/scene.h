@@ -15,6 +15,7 @@
 
 #include "material/material.h"
 #include "shape/shape.h"
+#include "sim/solitary_wave.h"
 
 namespace cdmpm {
 
@@ -50,6 +51,8 @@ struct BodySpec {
                                    // clockwise in 2D; in the x-z plane in 3D), about the hinge if any, else the centre
   std::vector<double> hinge;       // fixed pivot point (dim entries); empty = free body
   double hold_until = 0;           // the body is held at rest until this time [s], then released
+  // Fluid bodies only: start a solitary wave (sim/solitary_wave.h; key "solitary_wave" of the body).
+  std::optional<SolitaryWave> solitary;
 };
 
 // A boundary (boundary/boundary.h) of a registered type: its scene object as checked by the loader, from which
@@ -92,6 +95,26 @@ struct OutputSpec {
   double stop_after_first = -1;   // end the run this long [s] after the first iceberg separates; < 0 = never
 };
 
+// Where the domain lies on a map (key "georeference"): the easting and northing [m] of the domain's origin and,
+// in 2D, the azimuth of the +x axis (the transect), degrees clockwise from north. Recorded in summary.json and
+// used as the lower-left corner of the 3D hazard rasters (hazard/hazard_report.h).
+struct GeoreferenceSpec {
+  bool given = false;
+  double easting = 0, northing = 0;
+  double azimuth = 90;  // 2D only; default +x east
+};
+
+// Hazard products of scenes with a fluid (key "hazard"; hazard/hazard_map.h): sampled every step (interval 0)
+// or at most once per interval; a column counts as reached when its elevation exceeds arrival_threshold. The
+// still level of a column wet at t = 0 is its water top then, or still_level if given (a scene that starts
+// with a wave in the water).
+struct HazardSpec {
+  bool enabled = true;
+  double arrival_threshold = 0;  // [m]; set by the loader (default dx/4)
+  double interval = 0;           // [s]; 0 = every step
+  std::optional<double> still_level;  // [m]; default: each wet column's water top at t = 0
+};
+
 struct Scene {
   std::string path;             // file it was read from
   std::string name;             // scene name (default: file stem)
@@ -105,6 +128,8 @@ struct Scene {
   std::vector<SinkSpec> sinks;
   std::vector<ProbeSpec> probes;
   OutputSpec output;
+  GeoreferenceSpec georeference;
+  HazardSpec hazard;
   nlohmann::json json;          // the scene as read, with --set overrides applied
   nlohmann::json resolved;      // the same with its parameters and expressions evaluated (what was loaded)
   std::vector<std::string> overrides;  // the --set values applied, in order

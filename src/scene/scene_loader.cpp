@@ -34,7 +34,7 @@ class Loader {
     Node root{j, ""};
     // "parameters" is not listed: substitute_parameters has resolved and removed it before loading.
     r_.object(root, {"name", "dim", "domain", "time", "gravity", "materials", "bodies", "boundaries", "sinks",
-                     "probes", "output"});
+                     "probes", "output", "georeference", "hazard"});
     s_.dim = dim_;
     s_.name = root.has("name") ? r_.string(root["name"]) : std::filesystem::path(r_.file()).stem().string();
     if (s_.name.empty()) r_.expected(root["name"], "a non-empty string");
@@ -56,6 +56,8 @@ class Loader {
     }
     probes(root);
     if (root.has("output")) output(root["output"]);
+    if (root.has("georeference")) georeference(root["georeference"]);
+    hazard(root);
     return std::move(s_);
   }
 
@@ -109,7 +111,7 @@ class Loader {
 
   void body(const Node& b) {
     r_.object(b, {"material", "particles_per_cell", "shape", "holes", "velocity", "velocity_gradient", "hydrostatic",
-                  "surface_level", "rigid"});
+                  "surface_level", "rigid", "solitary_wave"});
     BodySpec spec;
     spec.material_index = material_ref(r_.required(b, "material"));
     spec.material = s_.materials[spec.material_index].name;
@@ -137,6 +139,7 @@ class Loader {
     if (b.has("velocity_gradient")) velocity_gradient(b["velocity_gradient"], spec);
     spec.hydrostatic = r_.boolean(b, "hydrostatic", true);
     if (b.has("surface_level")) spec.surface_level = r_.number(b["surface_level"]);
+    if (b.has("solitary_wave")) solitary_wave(b, spec);
     s_.bodies.push_back(std::move(spec));
   }
 
@@ -147,6 +150,19 @@ class Loader {
       auto values = r_.numbers(g[row], dim_);
       spec.velocity_gradient.insert(spec.velocity_gradient.end(), values.begin(), values.end());
     }
+  }
+
+  // A fluid body only; its shape must reach the crest, and it takes no surface_level (the wave sets it).
+  void solitary_wave(const Node& b, BodySpec& spec) const {
+    Node n = b["solitary_wave"];
+    if (!s_.materials[spec.material_index].traits().fluid)
+      r_.fail(n.path, "only a body of a fluid material (\"type\": \"water\") takes this key");
+    if (b.has("surface_level")) r_.fail(b.child("surface_level"), "not allowed together with \"solitary_wave\"");
+    spec.solitary = SolitaryWave::parse(r_, n);
+    const double crest_top = spec.solitary->still_level + spec.solitary->height;
+    if (spec.shape.upper(dim_ - 1) < crest_top)
+      r_.expected(n, "a wave whose crest (still_level + height = " + format_number(crest_top) +
+                     " m) lies within the body's shape (top " + format_number(spec.shape.upper(dim_ - 1)) + " m)");
   }
 
   // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds}, all optional.
@@ -215,6 +231,31 @@ class Loader {
     s_.output.damage_threshold = r_.number(ib, "damage_threshold", {0, 1, true, true}, 0.5);
     if (ib.has("min_cells")) s_.output.min_iceberg_cells = r_.integer(ib["min_cells"], ge(1));
     s_.output.stop_after_first = r_.number(ib, "stop_after_first", ge(0), -1.0);
+  }
+
+  // "georeference": {"easting": m, "northing": m, "azimuth": degrees in [0, 360), 2D only}.
+  void georeference(const Node& g) {
+    r_.object(g, dim_ == 2 ? Strings{"easting", "northing", "azimuth"} : Strings{"easting", "northing"});
+    GeoreferenceSpec& geo = s_.georeference;
+    geo.given = true;
+    geo.easting = r_.number(r_.required(g, "easting"));
+    geo.northing = r_.number(r_.required(g, "northing"));
+    if (dim_ == 2) geo.azimuth = r_.number(g, "azimuth", {0, 360, false, true}, 90.0);
+  }
+
+  // "hazard": {"enabled": bool, "arrival_threshold": m > 0 (default dx/4), "interval": s in [0, time.end] (0: every
+  // step), "still_level": m (default: measured per column at t = 0)}.
+  void hazard(const Node& root) {
+    HazardSpec& h = s_.hazard;
+    h.arrival_threshold = s_.domain.dx / 4;
+    if (!root.has("hazard")) return;
+    Node n = root["hazard"];
+    r_.object(n, {"enabled", "arrival_threshold", "interval", "still_level"});
+    h.enabled = r_.boolean(n, "enabled", true);
+    h.arrival_threshold = r_.number(n, "arrival_threshold", gt(0), h.arrival_threshold);
+    h.interval = r_.number(n, "interval", {0, s_.time.end}, 0.0);
+    if (n.has("still_level"))
+      h.still_level = r_.number(n["still_level"], {0, s_.domain.size.back()}, " (inside the domain's height)");
   }
 
   SceneReader r_;

@@ -79,6 +79,7 @@ class BodySeeder {
  private:
   bool filled(const DVec<dim>& x) const {
     if (!body_.shape.contains(x)) return false;
+    if (body_.solitary && x[vertical_axis<dim>] >= body_.solitary->surface(x[0])) return false;
     for (const auto& h : body_.holes)
       if (h.contains(x)) return false;
     for (const Tilted<dim>& t : rigid_shapes_)
@@ -97,7 +98,8 @@ class BodySeeder {
     const bool solid = mat_.traits().solid_state;
     const double top = column.empty() ? 0 : column.back()[up] + 0.5 * h_;
     const double surface = body_.surface_level ? *body_.surface_level : body_.shape.upper(up);
-    const double level = solid && !body_.surface_level ? top : surface;
+    double level = solid && !body_.surface_level ? top : surface;
+    if (body_.solitary && !column.empty()) level = body_.solitary->surface(column.front()[0]);
     const Real rho0 = mat_.density();
     for (const auto& x : column) {
       const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
@@ -108,7 +110,11 @@ class BodySeeder {
       Vec<dim> xp = x.template cast<Real>();
       if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
       // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
-      const Vec<dim> vp = v0_ + G_ * (xp - centre_);
+      Vec<dim> vp = v0_ + G_ * (xp - centre_);
+      if (body_.solitary) {  // sim/solitary_wave.h
+        vp[0] += static_cast<Real>(body_.solitary->u(x[0], g));
+        vp[up] += static_cast<Real>(body_.solitary->w(x[0], x[up], g));
+      }
       const MaterialId id = static_cast<MaterialId>(body_.material_index);
       if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha);
       else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);

@@ -1,0 +1,86 @@
+// hazard_map.h - the tsunami-hazard record of a run (scene key "hazard"; scenes with a fluid): per surface column
+// (the grid's cells in the horizontal, width dx; in 3D per (x, y) cell) the water top z_top (the highest fluid
+// particle plus half its spacing, as the wave gauge measures, probe/wave_gauge.cpp), sampled every step or at
+// most once per hazard.interval, and accumulated over the run:
+//   still level      z_top at t = 0 (or hazard.still_level, for a scene that starts with a wave); a column
+//                    without water at t = 0 is dry (land or dry bed),
+//   maximum          the largest z_top and the first time it was reached: the maximum free-surface elevation
+//                    eta_max = max z_top - still level (wet columns) or the maximum inundation depth
+//                    d_max = max z_top - bed (dry columns),
+//   arrival          the first time z_top exceeded the reference (still level, or bed for a dry column) by
+//                    hazard.arrival_threshold,
+//   run-up (2D)      on every shore (a column dry at t = 0 next to a wet one, whose bed lies at most dx below
+//                    the wet column's still level), the waterline: the edge of the last particle of the water
+//                    connected to the sea, in the furthest of the contiguous wet columns up the shore; the
+//                    shoreline's elevation z_s = min(bed just beyond the waterline, water top of that column)
+//                    (the bed on a slope; the water's top at a vertical wall); the run-up R = max z_s - still
+//                    level, the maximum vertical elevation the shoreline reaches above still water (Synolakis
+//                    1987), where and when; and the inundation extent,
+//                    the furthest horizontal position of the waterline, and when.
+// The bed is hazard/bed_height.h under each column centre (0 without terrain). Everything accumulated is a
+// maximum, a minimum or a first time, exact in any order, so the record has the same bits for any thread count;
+// it is saved in checkpoints (save_state) so a resumed run continues it bit for bit. Written at the end of the
+// run by hazard/hazard_report.h.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "sim/simulation.h"
+
+namespace cdmpm {
+
+template <int dim>
+class HazardMap {
+ public:
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  // One shore of a 2D run: its first dry column, the direction up the shore (+1: +x), the still level of the
+  // wet column before it, and the maxima so far (NaN until the waterline was measured).
+  struct Shore {
+    size_t first_dry = 0;
+    int direction = 1;
+    double still_level = kNaN;
+    double runup = kNaN, runup_x = kNaN, runup_time = kNaN;
+    double extent_x = kNaN, extent_time = kNaN;
+  };
+
+  explicit HazardMap(const Simulation<dim>& sim);
+  // Whether the scene records hazard (a fluid material, hazard.enabled).
+  bool active() const { return active_; }
+  // The initial state: still levels, shores, the first sample.
+  void init(const Simulation<dim>& sim);
+  // After a step: a sample, if the interval since the last one has passed.
+  void sample(const Simulation<dim>& sim);
+  std::vector<double> save_state() const;
+  // Restores what save_state wrote; false if it does not fit this scene's columns.
+  bool load_state(const std::vector<double>& state);
+
+  size_t columns() const { return bed_.size(); }
+  int count(int axis) const { return n_[axis]; }      // columns along horizontal axis `axis`
+  double centre(size_t column, int axis) const;       // column centre [m]
+  double dx() const { return dx_; }
+  double threshold() const { return threshold_; }
+  // Per column [m] and [s], NaN where not defined (still level of a dry column; never wet).
+  const std::vector<double>& bed() const { return bed_; }
+  const std::vector<double>& still_level() const { return still_; }
+  const std::vector<double>& max_top() const { return max_top_; }
+  const std::vector<double>& time_of_max() const { return t_max_; }
+  const std::vector<double>& arrival() const { return arrival_; }
+  const std::vector<Shore>& shores() const { return shores_; }
+
+ private:
+  void measure(const Simulation<dim>& sim);
+  void accumulate(const Simulation<dim>& sim);
+  void waterline(const Simulation<dim>& sim, Shore& s) const;
+  void find_shores();
+
+  bool active_ = false;
+  double dx_ = 0, threshold_ = 0, interval_ = 0, last_sample_ = kNaN;
+  int n_[2] = {1, 1};
+  std::vector<double> bed_, still_, max_top_, t_max_, arrival_;
+  std::vector<double> top_, left_, right_;  // this sample: water top; 2D: leftmost and rightmost particle edge
+  std::vector<Shore> shores_;
+};
+
+}  // namespace cdmpm

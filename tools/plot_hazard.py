@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""plot_hazard.py - plots of a run's hazard products (docs/scenes.md#hazard) into a folder you name.
+
+    /usr/bin/python3 tools/plot_hazard.py RUN_DIR --out FOLDER
+
+2D (hazard.csv, runup.csv): hazard.png, the bed and still level, the maximum free-surface elevation and the
+inundation depth along the domain, the arrival time and the time of the maximum, and each shore's run-up and
+inundation extent. 3D (the .asc rasters): hazard_maps.png, maps of the maximum elevation, its time, the arrival
+time and the inundation depth in map coordinates (the rasters' georeferenced corner). Writes only into FOLDER;
+a folder without hazard output is a one-line error (exit code 2).
+"""
+import argparse
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+
+def fail(msg):
+    print(f"plot_hazard.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_csv(path):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
+    cols = {}
+    for k, name in enumerate(header):
+        cols[name] = np.array([float(r[k]) if k < len(r) and r[k] != "" else np.nan for r in rows])
+    return cols
+
+
+def read_asc(path):
+    head = {}
+    with open(path) as f:
+        for _ in range(6):
+            key, value = f.readline().split()
+            head[key.lower()] = float(value)
+        data = np.loadtxt(f, ndmin=2)
+    data = np.where(data == head.get("nodata_value", np.nan), np.nan, data)
+    extent = [head["xllcorner"], head["xllcorner"] + head["ncols"] * head["cellsize"],
+              head["yllcorner"], head["yllcorner"] + head["nrows"] * head["cellsize"]]
+    return data, extent
+
+
+def plot_2d(run, out):
+    h = read_csv(os.path.join(run, "hazard.csv"))
+    shores = read_csv(os.path.join(run, "runup.csv")) if os.path.exists(os.path.join(run, "runup.csv")) else {}
+    fig, (a, b) = plt.subplots(2, 1, figsize=(11, 7), sharex=True)
+    x = h["x"]
+    a.plot(x, h["bed"], color="saddlebrown", label="bed [m]")
+    a.plot(x, h["still_level"], color="grey", ls="--", label="still level [m]")
+    a.plot(x, h["still_level"] + h["max_elevation"], color="tab:blue", label="still level + max elevation [m]")
+    a.plot(x, h["bed"] + h["max_depth"], color="tab:red", label="bed + max inundation depth [m]")
+    for k in range(len(shores.get("runup", []))):
+        if not np.isnan(shores["runup"][k]):
+            a.plot(shores["runup_x"][k], shores["still_level"][k] + shores["runup"][k], "k^",
+                   label=f"run-up {shores['runup'][k]:.4g} m at x = {shores['runup_x'][k]:.4g} m")
+            a.axvline(shores["extent_x"][k], color="k", lw=0.8, ls=":")
+    a.set_ylabel("elevation [m]")
+    a.legend(fontsize=8, loc="best")
+    a.set_title(f"{os.path.basename(os.path.normpath(run))}: maximum elevation and inundation")
+    b.plot(x, h["arrival_time"], ".", color="tab:green", label="arrival time [s]")
+    b.plot(x, h["time_of_max"], ".", color="tab:purple", ms=3, label="time of the maximum [s]")
+    b.set_xlabel("x [m]")
+    b.set_ylabel("time [s]")
+    b.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "hazard.png")
+    fig.savefig(path, dpi=120)
+    return [path]
+
+
+def plot_3d(run, out):
+    names = [("max_elevation.asc", "maximum elevation [m]"), ("max_elevation_time.asc", "time of the maximum [s]"),
+             ("arrival_time.asc", "arrival time [s]"), ("inundation_depth.asc", "maximum inundation depth [m]")]
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    for ax, (name, label) in zip(axes.flat, names):
+        data, extent = read_asc(os.path.join(run, name))
+        im = ax.imshow(data, extent=extent, origin="upper", aspect="equal")
+        fig.colorbar(im, ax=ax, label=label)
+        ax.set_xlabel("easting [m]")
+        ax.set_ylabel("northing [m]")
+        ax.set_title(name)
+    fig.tight_layout()
+    path = os.path.join(out, "hazard_maps.png")
+    fig.savefig(path, dpi=120)
+    return [path]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("run", help="a run's output folder")
+    ap.add_argument("--out", required=True, help="folder for the PNG files (created if missing)")
+    args = ap.parse_args()
+    has_2d = os.path.isfile(os.path.join(args.run, "hazard.csv"))
+    has_3d = os.path.isfile(os.path.join(args.run, "max_elevation.asc"))
+    if not (has_2d or has_3d):
+        fail(f"{args.run}: no hazard output (hazard.csv or max_elevation.asc); run a scene with water first")
+    try:
+        os.makedirs(args.out, exist_ok=True)
+        written = plot_2d(args.run, args.out) if has_2d else plot_3d(args.run, args.out)
+    except (OSError, ValueError, KeyError, IndexError) as e:
+        fail(f"{args.run}: cannot plot the hazard output: {e}")
+    summary = os.path.join(args.run, "summary.json")
+    if os.path.isfile(summary):
+        with open(summary) as f:
+            hz = json.load(f).get("hazard", {})
+        for s in hz.get("shores", []):
+            print(f"shore (direction {s['direction']}): run-up {s['runup']} m at x = {s['runup_x']} m, "
+                  f"inundation extent x = {s['extent_x']} m")
+    for p in written:
+        print(p)
+
+
+if __name__ == "__main__":
+    main()
