@@ -1,29 +1,38 @@
 #!/usr/bin/python3
 """plot_hazard.py - plots of a run's hazard products (docs/scenes.md#hazard) into a folder you name.
 
-    /usr/bin/python3 tools/plot_hazard.py RUN_DIR --out FOLDER
+    /usr/bin/python3 tools/plot_hazard.py RUN_DIR [--out FOLDER]
 
 2D (hazard.csv, runup.csv): hazard.png, the bed and still level, the maximum free-surface elevation and the
 inundation depth along the domain, the arrival time and the time of the maximum, and each shore's run-up and
 inundation extent. 3D (the .asc rasters): hazard_maps.png, maps of the maximum elevation, its time, the arrival
-time and the inundation depth in map coordinates (the rasters' georeferenced corner). Writes only into FOLDER;
-a folder without hazard output is a one-line error (exit code 2).
+time and the inundation depth in map coordinates (the rasters' georeferenced corner). Writes only into FOLDER
+(default RUN_DIR/plots; a folder holding committed files is refused unless --force); a folder without hazard
+output is a one-line error (exit code 2).
 """
 import argparse
 import json
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_style import fail as fail_as, output_folder  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+TOOL = "plot_hazard"
 
 
 def fail(msg):
-    print(f"plot_hazard.py: {msg}", file=sys.stderr)
-    sys.exit(2)
+    fail_as(TOOL, msg)
+
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+except ImportError as e:
+    fail(f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
 
 
 def read_csv(path):
@@ -97,14 +106,15 @@ def plot_3d(run, out):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run", help="a run's output folder")
-    ap.add_argument("--out", required=True, help="folder for the PNG files (created if missing)")
+    ap.add_argument("--out", help="folder for the PNG files (default RUN/plots; created if missing)")
+    ap.add_argument("--force", action="store_true", help="allow a folder with committed files")
     args = ap.parse_args()
     has_2d = os.path.isfile(os.path.join(args.run, "hazard.csv"))
     has_3d = os.path.isfile(os.path.join(args.run, "max_elevation.asc"))
     if not (has_2d or has_3d):
         fail(f"{args.run}: no hazard output (hazard.csv or max_elevation.asc); run a scene with water first")
+    args.out = output_folder(TOOL, args.out or os.path.join(args.run, "plots"), args.force)
     try:
-        os.makedirs(args.out, exist_ok=True)
         written = plot_2d(args.run, args.out) if has_2d else plot_3d(args.run, args.out)
     except (OSError, ValueError, KeyError, IndexError) as e:
         fail(f"{args.run}: cannot plot the hazard output: {e}")

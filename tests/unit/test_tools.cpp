@@ -26,6 +26,7 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
   const std::string none = dir / "no_such_run";
   expect_one_line_error(run_program(kPython, {source_path("tools/plot_frames.py"), none}), "plot_frames", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/plot_probes.py"), none}), "plot_probes", none);
+  expect_one_line_error(run_program(kPython, {source_path("tools/plot_hazard.py"), none}), "plot_hazard", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_lab"), "--skip-run", "--out", none}),
                         "validate_lab", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_dam_break.py"), "--no-run", "--out", none}),
