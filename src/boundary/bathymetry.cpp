@@ -3,7 +3,9 @@
 // 3D: a height field heights[j][i] at (origin[0] + i spacing[0], origin[1] + j spacing[1]), bilinearly
 // interpolated and clamped at its edges. Scene keys: 2D points; 3D origin, spacing, heights; or, instead, "file"
 // (a CSV profile in 2D, an ESRI ASCII grid in 3D, relative to the scene file; terrain/terrain_file.h) and
-// "file_origin" (the point of the file that becomes the domain's origin, default zeros).
+// "file_origin" (the point of the file that becomes the domain's origin, default zeros); "well_balanced" (bool,
+// default true with the slip condition, which it needs): the water bodies fill a layer of the solid below the bed
+// with fixed water particles (sim/bed_layer.h), and a particle that ends a step below the bed is put back on it.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -28,13 +30,28 @@ std::optional<TerrainSurface> terrain_of(const SceneReader& r, const Node& n) {
   return t;
 }
 
+// The "well_balanced" key: default true with the slip condition, which the bed layer needs (sim/bed_layer.h).
+bool well_balanced_of(const SceneReader& r, const Node& n, BoundaryCondition c) {
+  const bool slip = c == BoundaryCondition::Slip;
+  const bool wb = r.boolean(n, "well_balanced", slip);
+  if (wb && !slip) r.expected(n["well_balanced"], "false unless \"condition\" is \"slip\" (the bed layer needs a slip bed)");
+  return wb;
+}
+
+// Thickness of the bed layer (sim/bed_layer.h): 3 dx |n|_1 along the normal n. A quadratic B-spline stencil reaches
+// 1.5 dx along each axis, 1.5 dx |n|_1 along n: the nodes that water particles read lie at most that far below the
+// bed, and their own supports at most twice that, which the layer fills.
+constexpr Real bed_layer_cells = 3;
+
 // 2D bathymetry: solid below the piecewise-linear profile through (x_k, h_k); constant beyond its ends.
 class Bathymetry2D final : public Boundary<2> {
  public:
   Bathymetry2D(const SceneReader& r, const Node& n, Real dx) : Boundary<2>(r, n, dx) {
     Strings keys = Boundary<2>::common_keys();
-    keys.insert(keys.end(), {"points", "file", "file_origin"});
+    keys.insert(keys.end(), {"points", "file", "file_origin", "well_balanced"});
     r.object(n, keys);
+    well_balanced_ = well_balanced_of(r, n, condition_);
+    reach_ = bed_layer_cells * dx;
     if (const auto t = terrain_of(r, n)) {
       pts_ = t->points;
       return;
@@ -53,6 +70,18 @@ class Bathymetry2D final : public Boundary<2> {
     Real slope;
     const Real h = height(x[0], slope);
     if (x[1] <= h + tol_) apply_condition<2>(condition_, friction_, Vec<2>(-slope, 1).normalized(), v);
+  }
+  bool in_bed_layer(const Vec<2>& x, Vec<2>& normal) const override {
+    Real slope;
+    const Real h = height(x[0], slope);
+    normal = Vec<2>(-slope, 1).normalized();
+    const Real depth = (h - x[1]) * normal[1];  // distance below the tangent plane at (x, h(x))
+    return well_balanced_ && depth > 0 && depth < reach_ * normal.lpNorm<1>();
+  }
+  void keep_inside(Vec<2>& x) const override {
+    if (!well_balanced_) return;
+    Real slope;
+    x[1] = std::max(x[1], height(x[0], slope));
   }
 
  private:
@@ -73,6 +102,8 @@ class Bathymetry2D final : public Boundary<2> {
     return h;
   }
   std::vector<std::array<double, 2>> pts_;
+  bool well_balanced_ = false;
+  Real reach_ = 0;  // bed_layer_cells dx
 };
 
 // 3D bathymetry: solid below a bilinearly interpolated height field z = h(x, y), clamped at its edges.
@@ -80,8 +111,10 @@ class HeightField3D final : public Boundary<3> {
  public:
   HeightField3D(const SceneReader& r, const Node& n, Real dx) : Boundary<3>(r, n, dx) {
     Strings keys = Boundary<3>::common_keys();
-    keys.insert(keys.end(), {"origin", "spacing", "heights", "file", "file_origin"});
+    keys.insert(keys.end(), {"origin", "spacing", "heights", "file", "file_origin", "well_balanced"});
     r.object(n, keys);
+    well_balanced_ = well_balanced_of(r, n, condition_);
+    reach_ = bed_layer_cells * dx;
     if (const auto t = terrain_of(r, n)) {
       ox_ = t->origin[0], oy_ = t->origin[1], sx_ = t->spacing[0], sy_ = t->spacing[1];
       h_ = t->heights;
@@ -105,6 +138,18 @@ class HeightField3D final : public Boundary<3> {
     if (x[2] > h + tol_) return;
     apply_condition<3>(condition_, friction_, Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized(), v);
   }
+  bool in_bed_layer(const Vec<3>& x, Vec<3>& normal) const override {
+    double dhdx, dhdy;
+    const Real h = static_cast<Real>(height(x, dhdx, dhdy));
+    normal = Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized();
+    const Real depth = (h - x[2]) * normal[2];  // distance below the tangent plane at (x, y, h(x, y))
+    return well_balanced_ && depth > 0 && depth < reach_ * normal.lpNorm<1>();
+  }
+  void keep_inside(Vec<3>& x) const override {
+    if (!well_balanced_) return;
+    double dhdx, dhdy;
+    x[2] = std::max(x[2], static_cast<Real>(height(x, dhdx, dhdy)));
+  }
 
  private:
   // Bilinear height at (x, y) and its gradient.
@@ -121,6 +166,8 @@ class HeightField3D final : public Boundary<3> {
   }
   double ox_ = 0, oy_ = 0, sx_ = 1, sy_ = 1;
   std::vector<std::vector<double>> h_;
+  bool well_balanced_ = false;
+  Real reach_ = 0;  // bed_layer_cells dx
 };
 
 }  // namespace

@@ -31,6 +31,8 @@
 // (a face at x = 9 H with dx = H / 12 lies at 900 m, node 108 at 900.0000000000001 m: without the tolerance the
 // node would be free, and water would flow into the face's cell). The same tolerance decides whether a face
 // lies on a grid plane for the mirror treatment, so a face that holds a plane's nodes is also mirrored there.
+// A sloping slip bathymetry is well balanced instead by a layer of fixed water particles inside it (in_bed_layer;
+// sim/bed_layer.h), which completes the kernel support of the water above it.
 // After advection, a particle that crossed any domain wall is put back on the wall plane (the grid velocity
 // there has no normal component; the crossing is an interpolation overshoot of O(dt v)). The mirror picture
 // needs every particle on the material side of the wall. On the sparse grid (grid/grid.h) a pair is folded
@@ -96,6 +98,10 @@ class Boundary {
   virtual void unfold_ghosts(Grid<dim>&) const {}
   // Keeps a particle position on the material side of the boundary (walls and static slip boxes; see above).
   virtual void keep_inside(Vec<dim>&) const {}
+  // The well-balanced bed (sim/bed_layer.h): true if point x lies in the solid's bed layer, the part of the solid
+  // within reach of its surface where fixed water particles complete the kernel support of the water above;
+  // sets the surface's unit normal there (pointing into the material).
+  virtual bool in_bed_layer(const Vec<dim>&, Vec<dim>&) const { return false; }
 
   // Distance within which a grid node counts as on a face (see above).
   static Real node_tolerance(Real dx) { return node_tolerance_cells * dx; }

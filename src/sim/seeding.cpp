@@ -55,18 +55,33 @@ class BodySeeder {
   double spacing() const { return h_; }
 
   // Lattice columns along the vertical axis (the last), one at a time, so each column's top is known.
-  void seed(Particles<dim>& particles) const {
+  // Fluid bodies also fill the bed layers of the boundaries (sim/bed_layer.h) into `bed`, if given.
+  void seed(Particles<dim>& particles, BedLayer<dim>* bed) const {
     constexpr int up = vertical_axis<dim>;
     IVec<dim> k = lo_;
-    std::vector<DVec<dim>> column;
+    std::vector<DVec<dim>> column, bed_column;
+    std::vector<Vec<dim>> bed_normal;
+    const bool fills_bed = bed && mat_.traits().fluid && !mat_.traits().rigid;
     while (true) {
       column.clear();
+      bed_column.clear();
+      bed_normal.clear();
       for (k[up] = lo_[up]; k[up] <= hi_[up]; ++k[up]) {
         DVec<dim> x;
         for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h_;
-        if (filled(x)) column.push_back(x);
+        Vec<dim> n;
+        const Fill f = filled(x, n);
+        if (f == Fill::Material) column.push_back(x);
+        if (f == Fill::BedLayer && fills_bed) {
+          bed_column.push_back(x);
+          bed_normal.push_back(n);
+        }
       }
       seed_column(column, particles);
+      if (!bed_column.empty()) {
+        seed_column(bed_column, bed->particles);
+        bed->normal.insert(bed->normal.end(), bed_normal.begin(), bed_normal.end());
+      }
       int a = up - 1;
       for (; a >= 0; --a) {
         if (++k[a] <= hi_[a]) break;
@@ -77,17 +92,26 @@ class BodySeeder {
   }
 
  private:
-  bool filled(const DVec<dim>& x) const {
-    if (!body_.shape.contains(x)) return false;
-    if (body_.solitary && x[vertical_axis<dim>] >= body_.solitary->surface(x[0])) return false;
+  enum class Fill { None, Material, BedLayer };
+  // Whether lattice point x holds a particle of the body, one of a bed layer (with the bed's normal n: inside
+  // the body's shape, in the bed layer of one boundary and the solid of no other), or nothing.
+  Fill filled(const DVec<dim>& x, Vec<dim>& n) const {
+    if (!body_.shape.contains(x)) return Fill::None;
+    if (body_.solitary && x[vertical_axis<dim>] >= body_.solitary->surface(x[0])) return Fill::None;
     for (const auto& h : body_.holes)
-      if (h.contains(x)) return false;
+      if (h.contains(x)) return Fill::None;
     for (const Tilted<dim>& t : rigid_shapes_)
-      if (t.contains(x)) return false;
+      if (t.contains(x)) return Fill::None;
     const Vec<dim> xr = x.template cast<Real>();
-    for (const auto& b : boundaries_)
-      if (b->is_solid(xr)) return false;
-    return true;
+    int solid = 0, layer = 0;
+    for (const auto& b : boundaries_) {
+      if (!b->is_solid(xr)) continue;
+      ++solid;
+      Vec<dim> nb;
+      if (b->in_bed_layer(xr, nb)) ++layer, n = nb;
+    }
+    if (solid == 0) return Fill::Material;
+    return solid == 1 && layer == 1 ? Fill::BedLayer : Fill::None;
   }
 
   // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level.
@@ -139,7 +163,8 @@ class BodySeeder {
 
 template <int dim>
 void seed_bodies(const Scene& scene, std::vector<Material>& materials,
-                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles) {
+                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
+                 BedLayer<dim>* bed) {
   for (const bool solids : {true, false})
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
       const BodySpec& b = scene.bodies[i];
@@ -148,14 +173,16 @@ void seed_bodies(const Scene& scene, std::vector<Material>& materials,
       const BodySeeder<dim> seeder(scene, b, materials, boundaries);
       mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
       const size_t before = particles.size();
-      seeder.seed(particles);
+      seeder.seed(particles, bed);
       if (particles.size() == before)
         throw SceneError(scene.path + ": bodies[" + std::to_string(i) + "]: seeds no particle (its shape is smaller "
                          "than the particle spacing, or lies inside its holes, a rigid body or the solid of a boundary)");
     }
 }
 
-template void seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&, Particles<2>&);
-template void seed_bodies<3>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<3>>>&, Particles<3>&);
+template void seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&, Particles<2>&,
+                           BedLayer<2>*);
+template void seed_bodies<3>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<3>>>&, Particles<3>&,
+                           BedLayer<3>*);
 
 }  // namespace cdmpm

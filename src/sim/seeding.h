@@ -3,7 +3,8 @@
 // Particles sit on the lattice (k + 1/2) dx / n, n = ppc^(1/dim) per axis, so bodies that share a face tile
 // without gaps or overlaps. A lattice point is left empty if it lies in a hole of the body, inside a rigid
 // body (for the other bodies: a pool around a block) or inside the solid of any boundary (terrain, obstacles:
-// Boundary::is_solid). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
+// Boundary::is_solid; a fluid body's points in the bed layer of a well-balanced bed fill that layer instead,
+// sim/bed_layer.h). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
 // depth below the body's surface level, each material in its own initial state (InitialState of its model):
 //   fluids: pre-compressed to p = rho0 |g| d;
 //   solids: lithostatic uniaxial state sigma_v = -rho0 |g| d, sigma_h = 0 (a laterally free slab on a bed),
@@ -19,13 +20,16 @@
 #include "boundary/boundary.h"
 #include "core/particles.h"
 #include "scene/scene.h"
+#include "sim/bed_layer.h"
 
 namespace cdmpm {
 
 // Seeds every body of the scene; sets each material's half particle spacing. Throws SceneError naming a body
-// that seeds no particle.
+// that seeds no particle. With `bed`, the lattice points of fluid bodies in a boundary's bed layer
+// (Boundary::in_bed_layer) are seeded into it, in the same state (sim/bed_layer.h).
 template <int dim>
 void seed_bodies(const Scene& scene, std::vector<Material>& materials,
-                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles);
+                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
+                 BedLayer<dim>* bed = nullptr);
 
 }  // namespace cdmpm

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -29,7 +30,8 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s), materials(s.materials) {
   grid = Grid<dim>(domain_size, static_cast<Real>(s.domain.dx));
   for (const BoundarySpec& b : s.boundaries)
     boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{domain_size, grid.dx}));
-  seed_bodies<dim>(s, materials, boundaries, particles);
+  seed_bodies<dim>(s, materials, boundaries, particles, &bed_);
+  if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
   rigid.init(s, materials, particles, grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
@@ -66,7 +68,15 @@ void Simulation<dim>::step_until(double t) {
 template <int dim>
 void Simulation<dim>::advance(Real dt) {
   timer_.run(Phase::Bin, [&] { bin(); });
-  timer_.run(Phase::P2G, [&] { p2g(particles, materials, bins_, grid, dt); });
+  timer_.run(Phase::P2G, [&] {
+    if (!bed_.empty()) {  // the water's velocity along the bed, for the bed layer (sim/bed_layer.h)
+      p2g(particles, materials, bins_, grid, Real(0));
+      bed_.take_velocity(grid);
+      grid.clear();
+    }
+    p2g(particles, materials, bins_, grid, dt);
+    if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);
+  });
   timer_.run(Phase::BoundaryFold, [&] { boundary_fold(); });
   timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
@@ -88,7 +98,15 @@ void Simulation<dim>::bin() {
     particles.permute(std::move(bins_.order));  // the bins are rebuilt next
   }
   bins_.build(particles, grid);
-  grid.activate(bins_.blocks);
+  if (bed_.empty()) {
+    grid.activate(bins_.blocks);
+    return;
+  }
+  // The well-balanced bed: the blocks of the particles and of the bed layer.
+  blocks_.clear();
+  std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
+                 std::back_inserter(blocks_));
+  grid.activate(blocks_);
 }
 
 template <int dim>

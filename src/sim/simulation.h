@@ -22,6 +22,7 @@
 #include "grid/particle_bins.h"
 #include "material/material.h"
 #include "scene/scene.h"
+#include "sim/bed_layer.h"
 #include "sim/phases.h"
 #include "sim/rigid_bodies.h"
 
@@ -76,6 +77,8 @@ class Simulation {
   Real material_dt_ = 0;                 // smallest of the materials' own time-step limits
   std::vector<uint8_t> rigid_material_;  // per material: its particles are moved by a rigid body
   ParticleBins bins_;
+  BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
+  std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   PhaseTimer timer_;
 };
 
