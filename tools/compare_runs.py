@@ -39,7 +39,8 @@ HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_t
                 "inundation_depth.asc")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
-                "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file"}
+                "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file", "phase_seconds",
+                "command_line", "git_commit"}
 MAX_LINE = 160
 
 
