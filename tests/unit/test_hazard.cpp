@@ -2,7 +2,7 @@
 //   HazardSolitary (validation): scenes/solitary_runup_2d.json, a Boussinesq solitary wave of H/h = 0.1 on a
 //     plane beach of cot(beta) = 2.5, against theory: the maximum elevation along the constant-depth part, the
 //     arrival time of the wave front (speed c = sqrt(g (h + H))), the run-up against Synolakis (1987) and the
-//     inundation extent that goes with it (disabled: still water climbs the slope, see the test), and the run-up
+//     inundation extent that goes with it (disabled: 30 % above the law, see the test), and the run-up
 //     and inundation extent of the same wave at a vertical wall (Su & Mirie 1980);
 //   HazardProducts (end-to-end): a still 3D lake beside a raised shelf (rasters, georeferenced corner, no
 //     inundation, elevation ~ 0), and the products bit for bit across a checkpoint/resume and thread counts.
@@ -52,8 +52,7 @@ class HazardSolitary : public ::testing::Test {
 // A solitary wave keeps its form in constant depth (Boussinesq 1872): along the tank the largest elevation is
 // H, within the surface's resolution dx/4 = 0.21 H (the Boussinesq initial state adjusts its amplitude by a few %
 // of H in the Euler equations, Grimshaw 1971, well inside that). Checked from 2.5 h after the crest's start to
-// x = 14 h: beyond, the wave meets the disturbance that the still water's climb up the slope sends seaward
-// (docs/validation.md#solitary-wave-run-up).
+// x = 14 h, before the shoaling over the beach from x = 20 h reaches back (docs/validation.md#solitary-wave-run-up).
 //
 // One test for both products, so that ctest (one process per test) runs the scene once.
 TEST_F(HazardSolitary, MaxElevationAndArrivalTimeAlongTheConstantDepthPart) {
@@ -78,10 +77,9 @@ TEST_F(HazardSolitary, MaxElevationAndArrivalTimeAlongTheConstantDepthPart) {
 // Synolakis (1987): R / h = 2.831 sqrt(cot beta) (H / h)^(5/4) for a non-breaking solitary wave (H/h = 0.1 <
 // 0.288 (tan beta)^(10/9) = 0.104); within 15 %. The inundation extent goes with it: the waterline at the run-up
 // height lies R cot(beta) beyond the still shoreline.
-// Disabled: the bathymetry boundary does not hold still water at rest beside a slope (docs/scenes.md, bathymetry
-// row): still water climbs this 1:2.5 slope by 0.31 h at 12 cells per h (0.15 h at 24), and the run-up includes
-// that climb: R = 0.39 h at 12 cells per h (0.34 h at 24) against the law's 0.252 h (docs/validation.md#solitary-wave-run-up).
-// Enable it when the boundary is well balanced.
+// Disabled: with the well-balanced bed still water stays at rest beside the slope, but the run-up is 0.327 h
+// at 12 cells per h and 0.328 h at 24 against the law's 0.252 h (+30 %; +29 % at cot beta = 5, H/h = 0.045), a
+// converged, systematic excess whose cause is not yet found (docs/validation.md#solitary-wave-run-up).
 TEST_F(HazardSolitary, DISABLED_RunupAndInundationExtentFollowSynolakis) {
   const double R = h * 2.831 * std::sqrt(cot_beta) * std::pow(H / h, 1.25);
   const auto& shores = (*summary_)["hazard"]["shores"];
