@@ -45,11 +45,6 @@ def main():
     if bad:
         fail(TOOL, f"frame {bad[0]} does not exist (0..{len(frames) - 1})")
     folder = output_folder(TOOL, args.out or os.path.join(args.run, "plots"), args.force)
-    first = read_vtu(os.path.join(args.run, frames[picks[0]][1]))[0]
-    span = np.ptp(first[:, 0]) / max(np.ptp(first[:, 1]), 1e-30)
-    fig, axes = plt.subplots(len(picks), 1, figsize=(11, 0.6 + max(1.6, min(10.0 / span, 4.0)) * len(picks)), squeeze=False,
-                             layout="constrained")
-    cmap, sc = ice_colormap(), None
     loaded = []
     for k in picks:
         path = os.path.join(args.run, frames[k][1])
@@ -67,6 +62,11 @@ def main():
             return v[:, 0] if v.shape[1] == 1 else np.linalg.norm(v, axis=1)
 
         lo, hi = robust_range(np.concatenate([values(f, len(p)) for _, _, p, f, _ in loaded]))
+    first = loaded[0][2]
+    span = np.ptp(first[:, 0]) / max(np.ptp(first[:, 1]), 1e-30)
+    fig, axes = plt.subplots(len(picks), 1, figsize=(11, 0.6 + max(1.6, min(10.0 / span, 4.0)) * len(picks)), squeeze=False,
+                             layout="constrained")
+    cmap, sc = ice_colormap(), None
     for ax, (t, path, pts, f, meta) in zip(axes[:, 0], loaded):
         ice = ice_mask(f, meta, len(pts))
         s = max(0.5, 2e4 / len(pts))

@@ -67,9 +67,13 @@ def robust_range(values, lo=1.0, hi=99.0):
     return float(a), float(b)
 
 
+# Ice damage 0, 0.5, 1: slate grey (intact), amber, dark red (broken), as RGB in [0, 1] (matplotlib and ParaView).
+ICE_DAMAGE_COLOURS = [(0.373, 0.435, 0.502), (0.878, 0.627, 0.188), (0.608, 0.0, 0.0)]
+
+
 def ice_colormap():
     from matplotlib.colors import LinearSegmentedColormap
-    return LinearSegmentedColormap.from_list("ice_damage", ["#5f6f80", "#e0a030", "#9b0000"])
+    return LinearSegmentedColormap.from_list("ice_damage", ICE_DAMAGE_COLOURS)
 
 
 def ice_mask(fields, meta, n):

@@ -5,7 +5,8 @@
     xvfb-run -a pvpython tools/render_damage_paraview.py RUN_DIR [--time T] [--out FOLDER] [--size 1600 500]
 
 Reads RUN_DIR/particles.pvd (compressed or not), picks the frame at or after time T (default: the last), and
-writes FOLDER/damage_t<T>.png (default FOLDER: RUN_DIR/plots) and prints what it drew: the frame, the number of
+writes FOLDER/damage_t<T>.png (default FOLDER: RUN_DIR/plots; a folder holding committed files is refused
+unless --force) and prints what it drew: the frame, the number of
 particles, how many are ice and how many are water, and the damage range. 2D runs are viewed from +z, 3D runs
 from an oblique angle. (Debian packages paraview and xvfb.)
 """
@@ -15,9 +16,14 @@ import os
 import sys
 
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_style import ICE_DAMAGE_COLOURS, fail as fail_as, output_folder  # noqa: E402
+
+TOOL = "render_damage_paraview"
+
+
 def fail(message):
-    print(f"render_damage_paraview: {message}", file=sys.stderr)
-    sys.exit(2)
+    fail_as(TOOL, message)
 
 
 def main():
@@ -25,6 +31,7 @@ def main():
     ap.add_argument("run", help="a cdmpm run folder (with particles.pvd)")
     ap.add_argument("--time", type=float, help="frame time [s] (default: the last frame)")
     ap.add_argument("--out", help="output folder (default RUN/plots)")
+    ap.add_argument("--force", action="store_true", help="allow a folder with committed files")
     ap.add_argument("--size", type=int, nargs=2, default=[1600, 500], metavar=("W", "H"), help="image size [px]")
     args = ap.parse_args()
     pvd = os.path.join(args.run, "particles.pvd")
@@ -36,8 +43,7 @@ def main():
         from vtkmodules.util.numpy_support import vtk_to_numpy
     except ImportError as e:
         fail(f"needs ParaView's python (run with pvpython from Debian's paraview package): {e}")
-    folder = args.out or os.path.join(args.run, "plots")
-    os.makedirs(folder, exist_ok=True)
+    folder = output_folder(TOOL, args.out or os.path.join(args.run, "plots"), args.force)
 
     reader = pv.PVDReader(FileName=pvd)
     times = list(reader.TimestepValues or [0.0])
@@ -68,8 +74,8 @@ def main():
     display.PointSize = max(1.0, min(4.0, 4e5 / max(n, 1) ** 0.5 / 100))
     pv.ColorBy(display, ("POINTS", "damage"))
     lut = pv.GetColorTransferFunction("damage")
-    # Slate grey (intact, readable on white) through amber to dark red (broken), as tools/plot_style.py.
-    lut.RGBPoints = [0.0, 0.373, 0.435, 0.502, 0.5, 0.878, 0.627, 0.188, 1.0, 0.608, 0.0, 0.0]
+    # The ice colours of tools/plot_style.py, at damage 0, 0.5 and 1.
+    lut.RGBPoints = [v for d, rgb in zip((0.0, 0.5, 1.0), ICE_DAMAGE_COLOURS) for v in (d, *rgb)]
     lut.ColorSpace = "RGB"
     lut.RescaleTransferFunction(0.0, 1.0)
     lut.NanColor = [0.23, 0.48, 0.84]  # water: no damage field, drawn blue

@@ -87,9 +87,7 @@ void HazardMap<dim>::measure(const Simulation<dim>& sim) {
   }
   global::max(top_);
   global::max(right_);
-  for (double& v : left_) v = -v;  // the minimum as a maximum of negatives
-  global::max(left_);
-  for (double& v : left_) v = -v;
+  global::min(left_);
 }
 
 template <int dim>

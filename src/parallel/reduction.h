@@ -1,6 +1,6 @@
 // reduction.h - the one interface through which every global quantity is combined across processes: the
 // largest speed and wave speed (time step), the stability check, probe values, energies and mass, and the
-// rigid-body sums. Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
+// rigid-body sums, the hazard record's per-column extremes. Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
 // must not depend on the thread count), then passes its partial result here.
 //
 // One process (this build): every function is the identity. A distributed build (docs/architecture.md) makes
@@ -21,5 +21,7 @@ template <class T>
 void sum(std::vector<T>&) {}
 template <class T>
 void max(std::vector<T>&) {}
+template <class T>
+void min(std::vector<T>&) {}
 
 }  // namespace cdmpm::global
