@@ -32,11 +32,17 @@ std::string bad_meta(const CheckpointMeta& m, const Scene& scene) {
   for (const auto& [t, f] : m.frames)
     if (!std::isfinite(t) || t < 0 || t > m.time || !plain_frame_name(f)) return "bad frame entry";
   // Probe states may hold NaN (a gauge over a dry column at t = 0), but never an infinity; Probes::load_state
-  // checks that they fit the scene's probes.
-  if (std::any_of(m.probe_state.begin(), m.probe_state.end(), [](double v) { return std::isinf(v); }) ||
-      !finite_all(m.first_iceberg) || !finite_all(m.rigid_bodies))
+  // checks that they fit the scene's probes. The first iceberg's record is empty or (time, length, height, volume,
+  // particles, centroid[dim]) followed, since the failure geometry is measured, by its width and angle, which
+  // are NaN when the block was too small to measure (probe/iceberg_tracker.h).
+  const auto has_inf = [](const std::vector<double>& v) { return std::any_of(v.begin(), v.end(), [](double x) { return std::isinf(x); }); };
+  const size_t base = 5 + static_cast<size_t>(scene.dim), nb = m.first_iceberg.size();
+  if (has_inf(m.probe_state) || !finite_all(m.rigid_bodies) ||
+      (nb > 0 && !finite_all(std::vector<double>(m.first_iceberg.begin(), m.first_iceberg.begin() + std::min(nb, base)))) ||
+      has_inf(m.first_iceberg))
     return "non-finite probe, iceberg or rigid-body value";
-  if (m.probe_state.size() > 64 * (scene.probes.size() + 1) || m.first_iceberg.size() > 64) return "bad record length";
+  if (m.probe_state.size() > 64 * (scene.probes.size() + 1) || (nb != 0 && nb != base && nb != base + 2))
+    return "bad record length";
   return "";
 }
 

@@ -64,8 +64,8 @@ struct Ice {
     p.F[q] = F;
   }
   template <int dim>
-  InitialState<dim> initial_state(Real pressure) const {
-    const Vec<dim> st = elastic.template uniaxial_vertical_stretches<dim>(-pressure);
+  InitialState<dim> initial_state(Real pressure, Real lateral_ratio) const {
+    const Vec<dim> st = elastic.template vertical_load_stretches<dim>(-pressure, lateral_ratio);
     return {st.prod(), st.asDiagonal(), alpha_initial};
   }
   // Damage in [0, 1], the hardening variable alpha and the current strength p0(alpha) [Pa].

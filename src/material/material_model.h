@@ -17,8 +17,10 @@
 //   stable_dt(dx, dim)                 any further explicit time-step limit of the model (+inf if none),
 //   update<dim>(p, q, dt)              the per-particle constitutive update after g2p (the particle's new
 //                                      velocity gradient is C_q),
-//   initial_state<dim>(pressure)       the deformation state of a particle seeded at rest under the given
-//                                      lithostatic / hydrostatic pressure,
+//   initial_state<dim>(pressure, k)    the deformation state of a particle seeded at rest under the given
+//                                      lithostatic / hydrostatic pressure: solids under the vertical stress
+//                                      -pressure and the horizontal stress -k pressure (k the lateral stress
+//                                      ratio, sim/seeding.h), fluids under the isotropic pressure (k unused),
 //   field_names(), fields<dim>(p, q, out)  extra per-particle output fields for the frames.
 #pragma once
 
@@ -67,7 +69,7 @@ concept ConstitutiveModel = requires(const M m, const Particles<2>& p2, const Pa
   { m.stable_dt(s, 2) } -> std::same_as<Real>;
   m.template update<2>(w2, q, s);
   m.template update<3>(w3, q, s);
-  { m.template initial_state<2>(s) } -> std::same_as<InitialState<2>>;
+  { m.template initial_state<2>(s, s) } -> std::same_as<InitialState<2>>;
   { m.field_names() } -> std::convertible_to<std::vector<std::string>>;
   m.template fields<3>(p3, q, out);
 };

@@ -83,18 +83,19 @@ struct NeoHookeanSplit {
     return kirchhoff<dim>(F) * F.inverse().transpose();
   }
 
-  // Diagonal F (stretches: horizontal axes equal, vertical axis last) of the uniaxial vertical Cauchy stress
-  // sigma_v with zero horizontal stress: the lithostatic state of a laterally free ice body under its own
-  // weight (sigma_v = -rho g depth). Newton on (ln s_h, ln s_v) with the residual
-  // (tau_h, tau_v - J sigma_v) / kappa; converges in a few iterations for |sigma_v| << kappa.
+  // Diagonal F (stretches: horizontal axes equal, vertical axis last) of the vertical Cauchy stress sigma_v
+  // with the horizontal stress k sigma_v: the lithostatic state of an ice body under its own weight
+  // (sigma_v = -rho g depth), laterally free for k = 0 (uniaxial), cryostatic for k = 1 (isotropic, no
+  // deviatoric stress: the state creep relaxes glacier ice to). Newton on (ln s_h, ln s_v) with the residual
+  // (tau_h - J k sigma_v, tau_v - J sigma_v) / kappa; converges in a few iterations for |sigma_v| << kappa.
   template <int dim>
-  Vec<dim> uniaxial_vertical_stretches(Real sigma_v) const {
+  Vec<dim> vertical_load_stretches(Real sigma_v, Real k = 0) const {
     Real lh = 0, lv = 0;
     auto residual = [&](Real a, Real b) {
       Vec<dim> s = Vec<dim>::Constant(std::exp(a));
       s[dim - 1] = std::exp(b);
       const Vec<dim> tau = kirchhoff_from_singular_values<dim>(s);
-      return Eigen::Matrix<Real, 2, 1>(tau[0] / kappa, (tau[dim - 1] - s.prod() * sigma_v) / kappa);
+      return Eigen::Matrix<Real, 2, 1>((tau[0] - s.prod() * k * sigma_v) / kappa, (tau[dim - 1] - s.prod() * sigma_v) / kappa);
     };
     for (int it = 0; it < 50; ++it) {
       const auto r = residual(lh, lv);

@@ -27,7 +27,7 @@ struct TaitState {
   template <int dim>
   Real wave_speed(Real s) const { return eos.wave_speed(Real(1) / s); }
   template <int dim>
-  InitialState<dim> initial_state(Real pressure) const { return {eos.volume_ratio_at_pressure(pressure)}; }
+  InitialState<dim> initial_state(Real pressure, Real /*lateral_ratio*/) const { return {eos.volume_ratio_at_pressure(pressure)}; }
   std::vector<std::string> field_names() const { return {}; }
   template <int dim>
   void fields(const Particles<dim>&, size_t, float*) const {}

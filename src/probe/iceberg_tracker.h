@@ -7,17 +7,22 @@
 // probe sample, so the separation time is known to the probe interval; the detection that finds it is also
 // written to icebergs.csv (with the index of the last frame written), since a berg may break up before the
 // next frame.
+// The first iceberg's failure geometry (probe/failure_plane.h: the width of its top and the dip of the surface it
+// broke off along, on the side facing the glacier) is measured at that same detection and goes into summary.json
+// with it.
 // icebergs.csv columns: frame, time, id, particles, volume, length, height, centroid_x, centroid_y
 // (, centroid_z). Volumes are areas [m^2] in 2D.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <vector>
 
 #include "material/stress.h"
+#include "probe/failure_plane.h"
 #include "probe/icebergs.h"
 #include "sim/simulation.h"
 
@@ -39,7 +44,7 @@ class IcebergTracker {
 
   bool active() const { return active_; }
 
-  std::vector<IceBody<dim>> detect() const {
+  std::vector<IceBody<dim>> detect(std::vector<int>* label = nullptr) const {
     const auto& P = sim_.particles;
     const size_t n = P.size();
     std::vector<Real> volume(n), damage(n);
@@ -53,18 +58,27 @@ class IcebergTracker {
     }
     const OutputSpec& o = sim_.scene.output;
     return find_ice_bodies<dim>(P.x, volume, damage, is_ice, sim_.grid.dx, spacing_, o.flow_axis,
-                                static_cast<Real>(o.damage_threshold), min_particles_);
+                                static_cast<Real>(o.damage_threshold), min_particles_, label);
   }
 
   // Detection at a probe sample: records the first iceberg and, when it is found, writes that detection's
   // bodies to csv (labelled with the index of the frame written last). Returns true if it was found just now.
   bool sample(std::ostream& csv, long long frame) {
     if (!active_ || !first_.empty()) return false;
-    const auto bodies = detect();
+    std::vector<int> label;
+    const auto bodies = detect(&label);
     if (bodies.size() < 2) return false;
     const IceBody<dim>& b = bodies[1];
     first_ = {sim_.time(), b.length, b.height, b.volume, static_cast<double>(b.particles)};
     for (int a = 0; a < dim; ++a) first_.push_back(b.centroid[a]);
+    std::vector<Vec<dim>> block;
+    for (size_t q = 0; q < label.size(); ++q)
+      if (label[q] == 1) block.push_back(sim_.particles.x[q]);
+    const int axis = sim_.scene.output.flow_axis;
+    const FailureGeometry f = failure_geometry<dim>(block, sim_.grid.dx, spacing_, axis,
+                                                    bodies[0].centroid[axis] < b.centroid[axis] ? -1 : 1);
+    first_.push_back(f.width);
+    first_.push_back(f.angle);
     write_rows(csv, frame, bodies);
     return true;
   }
@@ -88,15 +102,21 @@ class IcebergTracker {
     csv.flush();
   }
 
-  // (time, length, height, volume, particles, centroid...) of the first iceberg; empty if none yet.
-  // Saved in checkpoints so a resumed run reports it.
+  // (time, length, height, volume, particles, centroid..., failure width, failure angle) of the first iceberg;
+  // empty if none yet. Saved in checkpoints so a resumed run reports it (a checkpoint written before the failure
+  // geometry was measured ends after the centroid).
   std::vector<double> first_;
 
   nlohmann::json summary() const {
     if (first_.empty()) return nullptr;
     nlohmann::json j = {{"time", first_[0]}, {"length", first_[1]}, {"height", first_[2]}, {"volume", first_[3]},
                         {"particles", static_cast<long long>(first_[4])}};
-    j["centroid"] = std::vector<double>(first_.begin() + 5, first_.end());
+    j["centroid"] = std::vector<double>(first_.begin() + 5, first_.begin() + 5 + dim);
+    const auto number_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+    if (first_.size() >= size_t(7 + dim)) {
+      j["failure_width"] = number_or_null(first_[5 + dim]);
+      j["failure_angle"] = number_or_null(first_[6 + dim]);
+    }
     return j;
   }
 

@@ -38,7 +38,7 @@ template <int dim>
 class TimeLoop {
  public:
   TimeLoop(const Scene& scene, const RunOptions& opt)
-      : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
+      : scene_(scene), opt_(opt), sim_(scene, !opt.resume), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
         files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
         e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}

@@ -32,6 +32,8 @@ struct TimeSpec {
   double cfl = 0.4;           // dt <= cfl * dx / max particle speed
   double wave_cfl = 0.4;      // dt <= wave_cfl * dx / largest wave speed of any material
   double max_dt = 0;          // optional upper bound on dt [s]; 0 = none
+  double settle = 0;          // settling before t = 0 [s]: solids elastic, velocities damped (sim/simulation.h)
+  double settle_damping = 0;  // damping rate of the settling [1/s]; default 10 / settle
 };
 
 struct BodySpec {
@@ -45,6 +47,8 @@ struct BodySpec {
   // of the shape's bounding box; also the particles' initial APIC matrix C = G (a spinning or stretching body)
   std::vector<double> velocity_gradient;
   bool hydrostatic = true;         // start in equilibrium under gravity (water: hydrostatic; ice: lithostatic)
+  double lateral_stress_ratio = 0; // solids: horizontal / vertical stress of the lithostatic state (0: laterally
+                                   // free slab, 1: cryostatic, no deviatoric stress; sim/seeding.h)
   std::optional<double> surface_level;  // free-surface height for the pre-compression; default shape top
   // Rigid bodies only (material type "rigid", key "rigid" of the body; sim/rigid_bodies.h):
   double tilt = 0;                 // initial rotation of the shape [degrees], turning +x towards up (counter-

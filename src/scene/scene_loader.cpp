@@ -89,13 +89,20 @@ class Loader {
   }
 
   void time(const Node& t) {
-    r_.object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt"});
+    r_.object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt", "settle", "settle_damping"});
     TimeSpec& ts = s_.time;
     ts.end = r_.number(r_.required(t, "end"), gt(0));
     ts.frame_interval = r_.number(r_.required(t, "frame_interval"), {0, ts.end, true, false}, " (at most time.end)");
     ts.cfl = r_.number(t, "cfl", {0, 1, true, false}, 0.4);
     ts.wave_cfl = r_.number(t, "wave_cfl", {0, 1, true, false}, 0.4);
     ts.max_dt = r_.number(t, "max_dt", ge(0), 0.0);
+    ts.settle = r_.number(t, "settle", {0, 1e4, false, false}, 0.0);
+    if (t.has("settle_damping")) {
+      if (ts.settle == 0) r_.fail(t.child("settle_damping"), "needs \"settle\" > 0");
+      ts.settle_damping = r_.number(t["settle_damping"], gt(0));
+    } else if (ts.settle > 0) {
+      ts.settle_damping = 10 / ts.settle;
+    }
   }
 
   void materials(const Node& ms) {
@@ -111,11 +118,14 @@ class Loader {
 
   void body(const Node& b) {
     r_.object(b, {"material", "particles_per_cell", "shape", "holes", "velocity", "velocity_gradient", "hydrostatic",
-                  "surface_level", "rigid", "solitary_wave"});
+                  "lateral_stress_ratio", "surface_level", "rigid", "solitary_wave"});
     BodySpec spec;
     spec.material_index = material_ref(r_.required(b, "material"));
     spec.material = s_.materials[spec.material_index].name;
     const bool is_rigid = s_.materials[spec.material_index].traits().rigid;
+    if (is_rigid && s_.time.settle > 0)
+      r_.expected(b["material"], "no rigid body in a scene with time.settle (the settling damps the particles' "
+                                 "velocities, not a rigid body's motion)");
     if (is_rigid)
       for (const auto& other : s_.bodies)
         if (other.material_index == spec.material_index)
@@ -138,6 +148,12 @@ class Loader {
     spec.velocity = b.has("velocity") ? r_.numbers(b["velocity"], dim_) : std::vector<double>(dim_, 0.0);
     if (b.has("velocity_gradient")) velocity_gradient(b["velocity_gradient"], spec);
     spec.hydrostatic = r_.boolean(b, "hydrostatic", true);
+    if (b.has("lateral_stress_ratio")) {
+      if (!s_.materials[spec.material_index].traits().solid_state || is_rigid)
+        r_.fail(b.child("lateral_stress_ratio"), "only a body of a deformable solid material (\"type\": \"ice\") takes this key");
+      if (!spec.hydrostatic) r_.fail(b.child("lateral_stress_ratio"), "needs \"hydrostatic\": true (a body seeded unloaded has no lithostatic stress)");
+      spec.lateral_stress_ratio = r_.number(b["lateral_stress_ratio"], {0, 1, false, false});
+    }
     if (b.has("surface_level")) spec.surface_level = r_.number(b["surface_level"]);
     if (b.has("solitary_wave")) solitary_wave(b, spec);
     s_.bodies.push_back(std::move(spec));

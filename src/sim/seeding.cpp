@@ -128,7 +128,7 @@ class BodySeeder {
     for (const auto& x : column) {
       const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
       const InitialState<dim> st =
-          mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0)); });
+          mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0), static_cast<Real>(body_.lateral_stress_ratio)); });
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
       const Real V0 = cell_volume_ / st.J;
       Vec<dim> xp = x.template cast<Real>();

@@ -7,8 +7,11 @@
 // sim/bed_layer.h). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
 // depth below the body's surface level, each material in its own initial state (InitialState of its model):
 //   fluids: pre-compressed to p = rho0 |g| d;
-//   solids: lithostatic uniaxial state sigma_v = -rho0 |g| d, sigma_h = 0 (a laterally free slab on a bed),
-//           d measured from the body's own top in each lattice column (unless surface_level is given).
+//   solids: lithostatic state sigma_v = -rho0 |g| d, sigma_h = k sigma_v, d measured from the body's own top in
+//           each lattice column (unless surface_level is given); k = lateral_stress_ratio, 0 by default (a
+//           laterally free slab on a bed: uniaxial, in equilibrium with a free vertical face), 1 cryostatic
+//           (isotropic: the deviatoric stress relaxed by creep, as deep in a glacier; a free face is then out of
+//           balance by the full overburden and the ice near it responds elastically from the first step).
 // The particle's current volume is (dx/n)^dim; its reference volume is that over J, its mass rho0 times that.
 // Solid-state bodies are seeded first, so that adding their particles is an append (core/particles.h).
 // Particles get consecutive ids in seeding order.

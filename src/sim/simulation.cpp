@@ -22,7 +22,7 @@
 namespace cdmpm {
 
 template <int dim>
-Simulation<dim>::Simulation(const Scene& s) : scene(s), materials(s.materials) {
+Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s.materials) {
   for (int a = 0; a < dim; ++a) {
     domain_size[a] = static_cast<Real>(s.domain.size[a]);
     gravity[a] = static_cast<Real>(s.gravity[a]);
@@ -37,6 +37,31 @@ Simulation<dim>::Simulation(const Scene& s) : scene(s), materials(s.materials) {
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
+  if (settle && s.time.settle > 0) settle_elastically(s.time.settle, static_cast<Real>(s.time.settle_damping));
+}
+
+// Dynamic relaxation before t = 0 (see simulation.h): elastic solids, damped velocities, then the clock restarts.
+template <int dim>
+void Simulation<dim>::settle_elastically(double duration, Real damping) {
+  const std::vector<Material> as_given = materials;
+  for (Material& m : materials)
+    if (auto* ice = std::get_if<Ice>(&m.model)) ice->plasticity = false;
+  while (time_ < duration) {
+    const double dt = std::min(static_cast<double>(stable_dt()), duration - time_);
+    if (dt < duration - time_) step(static_cast<Real>(dt));
+    else step_until(duration);
+    const Real f = std::exp(-damping * static_cast<Real>(dt));
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < particles.size(); ++q) {
+      particles.v[q] *= f;
+      particles.C[q] *= f;
+    }
+    update_speeds();
+  }
+  materials = as_given;
+  time_ = 0;
+  steps_ = 0;
+  update_speeds();
 }
 
 template <int dim>

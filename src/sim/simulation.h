@@ -9,6 +9,12 @@
 // (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h).
 // The simulation owns its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output
 // time).
+// Settling (scene time.settle > 0, fresh runs only): before t = 0 the scene is stepped for time.settle seconds
+// with every solid elastic (no return mapping, so no damage) and, after each step, every particle's velocity and
+// APIC matrix scaled by exp(-zeta dt), zeta = time.settle_damping: dynamic relaxation (Underwood 1983) to the
+// elastic equilibrium of the seeded bodies under gravity and the water's pressure, e.g. a glacier's cliff face,
+// which no seeded stress state balances exactly. The clock and the step count then restart at 0 with the
+// materials as given, so damage can only come from the loads of the settled state.
 #pragma once
 
 #include <memory>
@@ -31,7 +37,8 @@ namespace cdmpm {
 template <int dim>
 class Simulation {
  public:
-  explicit Simulation(const Scene& scene);
+  // Seeds the scene; settles it (see above) unless `settle` is false (a run resumed from a checkpoint).
+  explicit Simulation(const Scene& scene, bool settle = true);
 
   // Largest stable time step for the current state (before clamping to output times).
   Real stable_dt() const;
@@ -71,6 +78,7 @@ class Simulation {
   void rigid_projection(Real dt);
   void advect_phase(Real dt);
   void update_speeds();
+  void settle_elastically(double duration, Real damping);
 
   double time_ = 0;
   long long steps_ = 0;

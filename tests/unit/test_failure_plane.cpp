@@ -1,0 +1,75 @@
+// test_failure_plane.cpp - failure width and failure-plane dip of a calved block (probe/failure_plane.h), on
+// blocks of known geometry: the wedge of a cliff collapse as Luethi & Vieli (2016) describe Eqip Sermia's (a crack
+// 75 m behind the front at the surface, dipping 54 degrees down to the front), a vertical slab, its mirror image,
+// the same wedge extruded along the front in 3D, and a block too thin to fit a plane.
+//
+// Tolerances from the sampling: the block is a lattice of particles at spacing h, so each row's edge is the exact
+// crack position to within h, and the top's extent to within h. Over the wedge's height Z (103 m) a least-squares
+// slope through rows whose edges are off by at most h is off by at most 2 h / Z in slope, i.e.
+// 2 h / Z * sin^2(54 deg) radians in dip: 0.5 degrees for h = 1.25 m; the test allows 1 degree.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "probe/failure_plane.h"
+
+namespace cdmpm {
+namespace {
+
+constexpr Real dx = 2.5, h = 1.25;  // two particles per cell per axis
+constexpr double top = 200, width = 75, dip = 54;
+
+// Back edge of the wedge at height z (the front is at x = 0, the glacier at x < 0), mirrored by `side`.
+double crack_x(double z) { return -width + (top - z) / std::tan(dip * M_PI / 180); }
+
+template <int dim>
+std::vector<Vec<dim>> wedge(int side, double cross_width = 0) {
+  std::vector<Vec<dim>> x;
+  const double z0 = top - width * std::tan(dip * M_PI / 180);
+  for (double z = z0 + h / 2; z < top; z += h)
+    for (double s = -width + h / 2; s < 0; s += h) {
+      if (s < crack_x(z)) continue;
+      for (double y = h / 2; y < std::max(cross_width, h); y += h) {
+        Vec<dim> p;
+        p[0] = side < 0 ? s : -s;
+        p[dim - 1] = z;
+        if (dim == 3) p[1] = y;
+        x.push_back(p);
+      }
+    }
+  return x;
+}
+
+TEST(FailurePlane, WedgeOfACliffCollapseGivesItsDipAndTopWidth) {
+  for (int side : {-1, 1}) {
+    const FailureGeometry g = failure_geometry<2>(wedge<2>(side), dx, h, 0, side);
+    EXPECT_NEAR(g.angle, dip, 1.0) << "glacier side " << side;
+    EXPECT_NEAR(g.width, width, h) << "glacier side " << side;
+  }
+}
+
+TEST(FailurePlane, WedgeExtrudedAlongTheFrontIn3D) {
+  const FailureGeometry g = failure_geometry<3>(wedge<3>(-1, 20.0), dx, h, 0, -1);
+  EXPECT_NEAR(g.angle, dip, 1.0);
+  EXPECT_NEAR(g.width, width, h);
+}
+
+TEST(FailurePlane, VerticalSlabDipsNinetyDegrees) {
+  std::vector<Vec<2>> x;
+  for (double z = h / 2; z < 100; z += h)
+    for (double s = h / 2; s < 30; s += h) x.push_back(Vec<2>(s, z));
+  const FailureGeometry g = failure_geometry<2>(x, dx, h, 0, -1);
+  EXPECT_NEAR(g.angle, 90.0, 1e-9);
+  EXPECT_NEAR(g.width, 30.0, 1e-9);
+}
+
+TEST(FailurePlane, BlockOfOneRowHasNoPlane) {
+  std::vector<Vec<2>> x;
+  for (double s = h / 2; s < 30; s += h) x.push_back(Vec<2>(s, 0.5));
+  const FailureGeometry g = failure_geometry<2>(x, dx, h, 0, -1);
+  EXPECT_TRUE(std::isnan(g.angle));
+  EXPECT_TRUE(std::isnan(g.width));
+}
+
+}  // namespace
+}  // namespace cdmpm
