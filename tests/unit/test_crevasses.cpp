@@ -236,6 +236,45 @@ TEST(Crevasses, SeedingEmptiesTheCrevassesAndKeepsTheRestOfTheIce) {
   EXPECT_GT(area, 10 * 4 * 20);  // the crevasses are there (mean depth 30 m)
 }
 
+// A sloping top (a polygon from 100 m high at x = 10 to 80 m at x = 410) with crevasses in a region behind the
+// front, [210, 410]: each slot is cut from its own lattice column's top ice (the highest lattice point + h/2),
+// so the lattice points missing are exactly those in a slot above that column's top minus the depth; with a
+// given "surface" of 70 m the depths count from 70 m instead.
+TEST(Crevasses, DepthsCountFromEachColumnsTopOrTheGivenSurface) {
+  for (const bool given_surface : {false, true}) {
+    nlohmann::json c = {{"seed", 4}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 20}, {"depth_std", 5},
+                        {"width", 4}, {"region", {210, 410}}};
+    if (given_surface) c["surface"] = 70;
+    nlohmann::json j = ice_scene(2, c);
+    j["bodies"][0]["shape"] = {{"type", "polygon"}, {"vertices", {{10, 0}, {410, 0}, {410, 80}, {10, 100}}}};
+    const Scene s = scene_from_json(j, "sloping.json");
+    const auto st = s.bodies[0].crevasses->stations();
+    ASSERT_EQ(st.size(), 5u);
+    for (const auto& k : st) {
+      EXPECT_GT(k.x, 210 - 18.0);
+      EXPECT_LT(k.x, 410 + 18.0);
+    }
+    auto inside = [](double x, double y) { return y < 100 - 0.05 * (x - 10); };
+    auto column_top = [&](double x) {
+      double top = 0;
+      for (int j = 0; j < 100; ++j)
+        if (inside(x, j + 0.5)) top = j + 1.0;
+      return given_surface ? 70.0 : top;
+    };
+    size_t lattice = 0;
+    for (int i = 10; i < 410; ++i)
+      for (int j = 0; j < 100; ++j) {
+        const double x = i + 0.5, y = j + 0.5;
+        if (!inside(x, y)) continue;
+        bool cut = false;
+        for (const auto& k : st) cut = cut || (std::abs(x - k.x) < 2 && y > column_top(x) - k.depth);
+        lattice += !cut;
+      }
+    Simulation<2> sim(s);
+    EXPECT_EQ(sim.particles.size(), lattice) << (given_surface ? "given surface" : "column tops");
+  }
+}
+
 // 3D: a slab 80 m x 20 m x 20 m, h = 2 m; transverse crevasses every 20 m whose centre and depth vary along y
 // over 10 m. No particle in a crevasse, the particles missing are exactly the lattice points in them, and the
 // crevasses do vary along y.
