@@ -9,6 +9,7 @@ namespace {
 
 // The positions' noise gets its own permutation: the seed moved by a fixed odd constant.
 constexpr uint64_t kPositionSeedOffset = 0x632BE59BD9B4E019ULL;
+constexpr double kMaxSamples = 1e6;
 
 }  // namespace
 
@@ -49,6 +50,11 @@ CrevasseField CrevasseField::parse(const SceneReader& r, const Node& n, const Sh
     c.y_max = shape.upper(1);
     c.length = r.number(n, "length", gt(0), 5 * c.spacing);
   }
+  // A bound on the work and on crevasses.csv (a spacing or length far below the particle spacing is a mistake).
+  const double samples = std::floor((c.x_max - c.x_min) / c.spacing) * static_cast<double>(c.station_ys().size());
+  if (samples > kMaxSamples)
+    r.fail(n.path, "expected at most " + format_number(kMaxSamples) + " crevasses (times stations along y in 3D), got " +
+                       format_number(samples) + ": use a larger spacing" + (dim == 3 ? " or length" : ""));
   c.realise();
   return c;
 }

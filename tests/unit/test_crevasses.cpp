@@ -342,10 +342,12 @@ TEST(Crevasses, BadKeysAreRefusedNamingTheKey) {
                                    {"region", {300, 200}, "bodies[0].crevasses.region"},
                                    {"region", {0, 500}, "bodies[0].crevasses.region"},
                                    {"max_depth", 100, "bodies[0].crevasses.max_depth"},
-                                   {"length", 10, "bodies[0].crevasses"}};  // 3D only
+                                   {"length", 10, "bodies[0].crevasses"},  // 3D only
+                                   {"spacing", 1e-4, "bodies[0].crevasses"}};  // 4 million crevasses
   for (const auto& c : cases) {
     nlohmann::json cr = good;
     cr[c.key] = c.value;
+    if (c.key == "spacing" && c.value.get<double>() > 0) cr["width"] = 5e-5;
     try {
       scene_from_json(ice_scene(2, cr), "bad.json");
       ADD_FAILURE() << c.key << " = " << c.value.dump() << " accepted";
