@@ -8,7 +8,7 @@ OUTDIR/ref and OUTDIR/new of tools/check_bitwise.sh): then every run folder pres
 present in only one of them is a difference. Per run folder it checks:
 
   - probes.csv, icebergs.csv and waves.csv: byte for byte (the first differing line is printed); the hazard
-    products likewise when both runs wrote them;
+    products and crevasses.csv likewise when both runs wrote them;
   - particles.pvd: the same frame list (file names and the bits of every time);
   - every frame particles_NNNN.vtu, read through tools/vtu.py (so any encoding vtu.py reads): the particle count,
     the points, and every point-data array present in BOTH frames: the same type, shape and bits (two NaNs are
@@ -33,10 +33,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtu import read_pvd, read_vtu  # noqa: E402
 
 TEXT_FILES = ("probes.csv", "icebergs.csv", "waves.csv")
-# The hazard products (docs/scenes.md#hazard): compared byte for byte when both runs wrote them; a file only one
-# run wrote (a build from before them) is listed, not counted as a difference.
+# The hazard products (docs/scenes.md#hazard) and the realised crevasses (docs/scenes.md#crevasses): compared byte
+# for byte when both runs wrote them; a file only one run wrote (a build from before them) is listed, not counted
+# as a difference.
 HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
-                "inundation_depth.asc")
+                "inundation_depth.asc", "crevasses.csv")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
                 "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file", "phase_seconds",

@@ -1,6 +1,7 @@
 // run_files.cpp - the output files of a run and its checkpoints (run_files.h).
 #include "run/run_files.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -41,6 +42,21 @@ void RunFiles<dim>::write_provenance(const std::vector<std::string>& command_lin
                               {"git_commit", CDMPM_GIT_COMMIT}};
   std::ofstream(path("run.json")) << run.dump(2) << '\n';
   std::ofstream(path("scene.resolved.json")) << scene.resolved.dump(2) << '\n';
+  write_crevasses();
+}
+
+// crevasses.csv: the realised surface crevasses of every body that has them (shape/crevasse_field.h).
+template <int dim>
+void RunFiles<dim>::write_crevasses() const {
+  const Scene& scene = sim_.scene;
+  if (std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return b.crevasses.has_value(); }))
+    return;
+  std::ofstream out(path("crevasses.csv"));
+  if (!out) throw std::runtime_error(path("crevasses.csv").string() + ": cannot write");
+  out.precision(10);
+  out << CrevasseField::csv_header(dim) << '\n';
+  for (size_t i = 0; i < scene.bodies.size(); ++i)
+    if (scene.bodies[i].crevasses) scene.bodies[i].crevasses->write_csv(out, i);
 }
 
 template <int dim>

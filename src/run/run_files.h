@@ -6,7 +6,8 @@
 //                           that moment, so that a resumed run cuts them back to where the checkpoint was taken,
 //   run.json                provenance: the scene file (absolute path), the --set values, the command line, the
 //                           version and git commit; `cdmpm run --resume DIR` reads the scene and --set values here,
-//   scene.resolved.json     the scene as loaded: --set values applied, parameters and expressions evaluated.
+//   scene.resolved.json     the scene as loaded: --set values applied, parameters and expressions evaluated,
+//   crevasses.csv           scenes with crevassed ice bodies: the realised crevasses (shape/crevasse_field.h).
 // A fresh run creates the folder and the files; a resumed run reads the checkpoint into the simulation, the
 // probes and the iceberg tracker, and appends to the files.
 #pragma once
@@ -48,6 +49,7 @@ class RunFiles {
  private:
   void open_tables(bool append);
   void write_provenance(const std::vector<std::string>& command_line) const;
+  void write_crevasses() const;
   std::filesystem::path out_;
   Simulation<dim>& sim_;
   Probes<dim>& probes_;

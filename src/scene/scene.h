@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "material/material.h"
+#include "shape/crevasse_field.h"
 #include "shape/shape.h"
 #include "sim/solitary_wave.h"
 
@@ -57,6 +58,9 @@ struct BodySpec {
   double hold_until = 0;           // the body is held at rest until this time [s], then released
   // Fluid bodies only: start a solitary wave (sim/solitary_wave.h; key "solitary_wave" of the body).
   std::optional<SolitaryWave> solitary;
+  // Ice bodies only: surface crevasses cut from the top, from seeded simplex noise (shape/crevasse_field.h;
+  // key "crevasses" of the body).
+  std::optional<CrevasseField> crevasses;
 };
 
 // A boundary (boundary/boundary.h) of a registered type: its scene object as checked by the loader, from which

@@ -118,7 +118,7 @@ class Loader {
 
   void body(const Node& b) {
     r_.object(b, {"material", "particles_per_cell", "shape", "holes", "velocity", "velocity_gradient", "hydrostatic",
-                  "lateral_stress_ratio", "surface_level", "rigid", "solitary_wave"});
+                  "lateral_stress_ratio", "surface_level", "rigid", "solitary_wave", "crevasses"});
     BodySpec spec;
     spec.material_index = material_ref(r_.required(b, "material"));
     spec.material = s_.materials[spec.material_index].name;
@@ -156,6 +156,7 @@ class Loader {
     }
     if (b.has("surface_level")) spec.surface_level = r_.number(b["surface_level"]);
     if (b.has("solitary_wave")) solitary_wave(b, spec);
+    if (b.has("crevasses")) crevasses(b["crevasses"], spec);
     s_.bodies.push_back(std::move(spec));
   }
 
@@ -179,6 +180,14 @@ class Loader {
     if (spec.shape.upper(dim_ - 1) < crest_top)
       r_.expected(n, "a wave whose crest (still_level + height = " + format_number(crest_top) +
                      " m) lies within the body's shape (top " + format_number(spec.shape.upper(dim_ - 1)) + " m)");
+  }
+
+  // A body of a breakable solid (ice) only (shape/crevasse_field.h).
+  void crevasses(const Node& n, BodySpec& spec) const {
+    const auto traits = s_.materials[spec.material_index].traits();
+    if (!traits.solid_state || traits.rigid)
+      r_.fail(n.path, "only a body of an ice material (\"type\": \"ice\") takes this key");
+    spec.crevasses = CrevasseField::parse(r_, n, spec.shape);
   }
 
   // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds}, all optional.

@@ -77,6 +77,7 @@ class BodySeeder {
           bed_normal.push_back(n);
         }
       }
+      if (body_.crevasses) cut_crevasse(column);
       seed_column(column, particles);
       if (!bed_column.empty()) {
         seed_column(bed_column, bed->particles);
@@ -112,6 +113,18 @@ class BodySeeder {
     }
     if (solid == 0) return Fill::Material;
     return solid == 1 && layer == 1 ? Fill::BedLayer : Fill::None;
+  }
+
+  // Removes the lattice points of a column in a surface crevasse (shape/crevasse_field.h): those above the
+  // crevasse's bottom, its depth below the column's top ice (or the field's given surface).
+  void cut_crevasse(std::vector<DVec<dim>>& column) const {
+    constexpr int up = vertical_axis<dim>;
+    if (column.empty()) return;
+    const CrevasseField& field = *body_.crevasses;
+    const double d = field.cut_depth(column.front()[0], dim == 3 ? column.front()[1] : 0.0);
+    if (d <= 0) return;
+    const double bottom = (field.surface ? *field.surface : column.back()[up] + 0.5 * h_) - d;
+    std::erase_if(column, [&](const DVec<dim>& x) { return x[up] > bottom; });
   }
 
   // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level.

@@ -1,8 +1,9 @@
 // seeding.h - the initial particles of a scene: every body's shape filled on a lattice, in its initial state.
 //
 // Particles sit on the lattice (k + 1/2) dx / n, n = ppc^(1/dim) per axis, so bodies that share a face tile
-// without gaps or overlaps. A lattice point is left empty if it lies in a hole of the body, inside a rigid
-// body (for the other bodies: a pool around a block) or inside the solid of any boundary (terrain, obstacles:
+// without gaps or overlaps. A lattice point is left empty if it lies in a hole of the body, in one of its
+// surface crevasses (shape/crevasse_field.h: a slot cut down from the column's top ice), inside a rigid body
+// (for the other bodies: a pool around a block) or inside the solid of any boundary (terrain, obstacles:
 // Boundary::is_solid; a fluid body's points in the bed layer of a well-balanced bed fill that layer instead,
 // sim/bed_layer.h). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
 // depth below the body's surface level, each material in its own initial state (InitialState of its model):
