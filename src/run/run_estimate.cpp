@@ -63,7 +63,7 @@ RunEstimate estimate_run(const Scene& s) {
   const Real rdx = static_cast<Real>(dx);
   e.first_dt = stable_time_step(s.time, rdx, Real(0), static_cast<Real>(rest_wave_speed(s)),
                                 material_time_step_limit(s.materials, rdx, s.dim));
-  e.steps = std::ceil(s.time.end / e.first_dt);
+  e.steps = std::ceil((s.time.end + s.time.settle) / e.first_dt);  // the settling (time.settle) steps too
   e.frames = s.output.frames ? std::floor(s.time.end / s.time.frame_interval + 1e-9) + 1 : 0;
   e.frame_bytes = e.frames * e.particles * (s.dim == 3 ? 40 : 25);
   e.wall_seconds = e.particles * e.steps / (s.dim == 3 ? 2e6 : 4e6);

@@ -1,5 +1,5 @@
 // run_estimate.h - what a run will cost, estimated from the scene alone before anything is allocated: particles
-// (at most: every lattice point of each body's bounding box), memory, the first time step, steps to the end,
+// (at most: every lattice point of each body's bounding box), memory, the first time step, steps to the end (and of the settling, time.settle),
 // frames, output size and wall time on this machine; and the check that refuses, before it starts, a run that
 // would not fit the machine's memory, whose grid lattice would overflow its indices, or that would write more
 // frames than a set limit (`cdmpm run --force` runs it anyway; docs/scenes.md, "Limits").

@@ -160,6 +160,9 @@ class TimeLoop {
 
 RunResult run_scene(const Scene& scene, const RunOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  if (opt.progress && !opt.resume && scene.time.settle > 0)
+    std::cerr << "cdmpm: settling for " << scene.time.settle << " s before t = 0 (time.settle: solids elastic, "
+              << "velocities damped at " << scene.time.settle_damping << " 1/s)\n";
   return scene.dim == 2 ? TimeLoop<2>(scene, opt).run() : TimeLoop<3>(scene, opt).run();
 }
 
