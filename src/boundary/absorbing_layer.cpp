@@ -36,9 +36,9 @@ class AbsorbingLayer final : public Boundary<dim> {
     constexpr int up = vertical_axis<dim>;
     Strings faces = {"x-", "x+"};
     if (dim == 3) faces.insert(faces.end(), {"y-", "y+"});
-    const std::string face = r.string(r.required(n, "face"), faces);
-    axis_ = face[0] - 'x';
-    side_ = face[1] == '+' ? 1 : 0;
+    face_ = r.string(r.required(n, "face"), faces);
+    axis_ = face_[0] - 'x';
+    side_ = face_[1] == '+' ? 1 : 0;
     const double extent = size_[axis_];
     width_ = static_cast<Real>(r.number(r.required(n, "width"), {2 * dx_, extent},
                                         " (at least 2 dx and at most the domain's extent along the face normal)"));
@@ -70,6 +70,7 @@ class AbsorbingLayer final : public Boundary<dim> {
     v[axis_] = (v[axis_] + sigma_dt * target) / (1 + sigma_dt);
   }
   bool is_solid(const Vec<dim>&) const override { return false; }
+  std::string needs_closed_face() const override { return face_; }
 
   std::vector<SinkSpec> sinks() const override {
     SinkSpec k;
@@ -130,6 +131,7 @@ class AbsorbingLayer final : public Boundary<dim> {
 
   Vec<dim> size_;
   Real dx_;
+  std::string face_;
   int axis_ = 0, side_ = 1;
   Real width_ = 0, still_level_ = 0, depth_ = 0, spill_ = 0, spill_level_ = 0;
   Real strength_ = std::numeric_limits<Real>::quiet_NaN();  // the scene's strength, NaN for the default

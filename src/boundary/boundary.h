@@ -100,6 +100,10 @@ class Boundary {
   virtual void prepare(const Simulation<dim>&, Real) {}
   // Outlets the boundary adds to the scene's sinks (absorbing layers: the spillway at their face).
   virtual std::vector<SinkSpec> sinks() const { return {}; }
+  // The domain faces ("x-", ...) the boundary closes (walls), and the face it lies in front of and needs closed
+  // by another boundary ("" if none; absorbing layers): the loader checks every such face is closed.
+  virtual Strings closed_faces() const { return {}; }
+  virtual std::string needs_closed_face() const { return ""; }
   // Adds ghost-node mass and momentum to mirror nodes (slip walls and static slip boxes; see above).
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).

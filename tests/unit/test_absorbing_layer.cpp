@@ -116,13 +116,13 @@ TEST(AbsorbingBoundary, StillWaterIsNotDrained) {
   EXPECT_LT(max_abs(r.gauge), 1e-3);
 }
 
-std::string refused(const nlohmann::json& boundary) {
+std::string refused(const nlohmann::json& boundary, const nlohmann::json& wall_faces = {"x-", "x+", "y-"}) {
   nlohmann::json j = {{"dim", 2},
                       {"domain", {{"size", {20.0, 1.5}}, {"dx", 0.125}}},
                       {"time", {{"end", 1.0}, {"frame_interval", 1.0}}},
                       {"materials", {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1e6}}}}},
                       {"bodies", {{{"material", "water"}, {"particles_per_cell", 4}, {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {20, 1}}}}}}},
-                      {"boundaries", {{{"type", "walls"}, {"condition", "slip"}}, boundary}}};
+                      {"boundaries", {{{"type", "walls"}, {"condition", "slip"}, {"faces", wall_faces}}, boundary}}};
   try {
     scene_from_json(j, "layer.json");
   } catch (const SceneError& e) {
@@ -165,6 +165,8 @@ TEST(AbsorbingBoundary, InputErrorsNameTheKey) {
   EXPECT_TRUE(has(m, "boundaries[1].spill_width")) << m;
   m = with("condition", "slip");
   EXPECT_TRUE(has(m, "boundaries[1].condition") && has(m, "unknown key")) << m;
+  m = refused(ok, {"x-", "y-"});  // the face the layer lies in front of is open
+  EXPECT_TRUE(has(m, "boundaries[1].face") && has(m, "walls") && has(m, "x+")) << m;
   m = without("face");
   EXPECT_TRUE(has(m, "boundaries[1].face") && has(m, "required")) << m;
   m = without("width");
