@@ -19,6 +19,9 @@ set -uo pipefail
 # most take 2-10 s. Measured: docs/testing.md.
 # scene | overrides | why this end time
 CASES=(
+  "absorbing_packet_2d|parameters.cells_per_h=6 output.frames=true time.end=6 time.frame_interval=2|the packet splits, its halves enter the absorbing layers at both ends (boundary/absorbing_layer.cpp); ~2900 steps of 7.5k particles at 6 cells per h (full run 20 s; frames turned on)"
+  "absorbing_solitary_3d|output.frames=true time.end=1 time.frame_interval=0.5|the 3D solitary wave starts along the channel (the layer's 3D columns, still water in front of it); ~480 steps of 24k particles (full run 13 s; frames turned on)"
+  "absorbing_solitary_2d|parameters.cells_per_h=6 output.frames=true time.end=8 time.frame_interval=2|the solitary wave enters the absorbing layer and its spillway removes water (from 5.5 s); ~3800 steps of 6.1k particles at 6 cells per h (full run 15 s; frames turned on)"
   "calving_front_2d|time.end=1.5 time.frame_interval=0.5|the notch overhang breaks off at t = 1.4 s: covers the first iceberg (icebergs.csv, summary first_iceberg); ~930 steps of 20k particles, the longest case"
   "calving_3d|parameters.cells_per_H=6 time.end=1 time.frame_interval=0.25|the 25M-particle scale scene at H/6 instead of H/50 (43k particles): 1 s of ice and water settling; its first iceberg comes after the push (> 10 s), not cheap"
   "dam_break_2d|time.end=0.03 time.frame_interval=0.01|the water column starts to fall; ~1200 steps of 12.8k particles (full run 0.25 s)"

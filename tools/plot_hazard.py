@@ -16,7 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail as fail_as, output_folder  # noqa: E402
+from plot_style import fail as fail_as, output_folder, read_csv  # noqa: E402
 
 TOOL = "plot_hazard"
 
@@ -33,16 +33,6 @@ try:
     import numpy as np
 except ImportError as e:
     fail(f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
-
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-        rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
-    cols = {}
-    for k, name in enumerate(header):
-        cols[name] = np.array([float(r[k]) if k < len(r) and r[k] != "" else np.nan for r in rows])
-    return cols
 
 
 def read_asc(path):

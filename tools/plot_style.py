@@ -11,7 +11,9 @@
   ice_mask(fields, meta)        which particles are ice: those whose damage is a number (frames write NaN on
                                 materials without damage), or by the material names of older frames;
   probe_units(run_dir)          axis label with units for every column of probes.csv, from the probe types in
-                                the run's scene.resolved.json (2D runs: extensive quantities per metre of width).
+                                the run's scene.resolved.json (2D runs: extensive quantities per metre of width);
+  read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, ...) as column name -> array
+                                (an empty field is NaN).
 """
 import json
 import os
@@ -125,3 +127,13 @@ def probe_units(run_dir):
             for a in "xyz"[:dim]:
                 labels[f"{name}_{a}"] = f"{name} {a}: {quantity} [{unit}]"
     return labels
+
+
+def read_csv(path):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
+    cols = {}
+    for k, name in enumerate(header):
+        cols[name] = np.array([float(r[k]) if k < len(r) and r[k] != "" else np.nan for r in rows])
+    return cols

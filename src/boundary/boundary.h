@@ -1,6 +1,6 @@
 // boundary.h - boundary conditions on grid nodes: the interface every boundary type implements, and the
 // registry that builds them (one file per type: boundary/walls.cpp, half_plane.cpp, box_obstacle.cpp,
-// bathymetry.cpp; the list in boundary/registry.cpp).
+// bathymetry.cpp, absorbing_layer.cpp; the list in boundary/registry.cpp).
 //
 // Every boundary is a solid region with an outward normal n (pointing from the solid into the material).
 // A grid node inside the solid gets one of three conditions (Stomakhin et al. 2013, sec. 6; Jiang et al.
@@ -51,6 +51,9 @@
 
 namespace cdmpm {
 
+template <int dim>
+class Simulation;
+
 // Distance, in cells, within which a grid node counts as on a face (see above).
 inline constexpr Real node_tolerance_cells = Real(1e-3);
 
@@ -92,6 +95,15 @@ class Boundary {
   virtual bool is_solid(const Vec<dim>& x) const = 0;
   // Moves the solid to its position at time t (moving obstacles only).
   virtual void move_to(double) {}
+  // Reads what the boundary needs from the state before the grid update of a step of length dt (absorbing layers:
+  // the free surface in their columns). Called after move_to, before apply.
+  virtual void prepare(const Simulation<dim>&, Real) {}
+  // Outlets the boundary adds to the scene's sinks (absorbing layers: the spillway at their face).
+  virtual std::vector<SinkSpec> sinks() const { return {}; }
+  // The domain faces ("x-", ...) the boundary closes (walls), and the face it lies in front of and needs closed
+  // by another boundary ("" if none; absorbing layers): the loader checks every such face is closed.
+  virtual Strings closed_faces() const { return {}; }
+  virtual std::string needs_closed_face() const { return ""; }
   // Adds ghost-node mass and momentum to mirror nodes (slip walls and static slip boxes; see above).
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).

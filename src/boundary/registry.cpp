@@ -13,6 +13,7 @@ template <int dim> std::unique_ptr<Boundary<dim>> make_walls(const SceneReader&,
 template <int dim> std::unique_ptr<Boundary<dim>> make_half_plane(const SceneReader&, const Node&, const BoundaryContext<dim>&);
 template <int dim> std::unique_ptr<Boundary<dim>> make_box_obstacle(const SceneReader&, const Node&, const BoundaryContext<dim>&);
 template <int dim> std::unique_ptr<Boundary<dim>> make_bathymetry(const SceneReader&, const Node&, const BoundaryContext<dim>&);
+template <int dim> std::unique_ptr<Boundary<dim>> make_absorbing_layer(const SceneReader&, const Node&, const BoundaryContext<dim>&);
 
 namespace {
 
@@ -27,6 +28,7 @@ const Entry kRegistry[] = {
     CDMPM_BOUNDARY("half_plane", make_half_plane),
     CDMPM_BOUNDARY("box", make_box_obstacle),
     CDMPM_BOUNDARY("bathymetry", make_bathymetry),
+    CDMPM_BOUNDARY("absorbing_layer", make_absorbing_layer),
 };
 #undef CDMPM_BOUNDARY
 

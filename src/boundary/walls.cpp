@@ -27,6 +27,7 @@ class Walls final : public Boundary<dim> {
         faces.push_back(face);
       }
     }
+    faces_ = faces;
     static const char* names[3] = {"x", "y", "z"};
     for (int a = 0; a < dim; ++a)
       for (int side = 0; side < 2; ++side) on_[a][side] = contains(faces, std::string(names[a]) + (side ? "+" : "-"));
@@ -54,6 +55,7 @@ class Walls final : public Boundary<dim> {
       }
     }
   }
+  Strings closed_faces() const override { return faces_; }
   void fold_ghosts(Grid<dim>& g) const override {
     for_each_mirror_pair(g, false, [&](size_t s, size_t d, int a) { fold_pair(g, s, d, a); });
   }
@@ -80,6 +82,7 @@ class Walls final : public Boundary<dim> {
 
  private:
   Vec<dim> size_;
+  Strings faces_;
   std::array<std::array<bool, 2>, 3> on_{};
 };
 

@@ -80,7 +80,7 @@ void RunFiles<dim>::resume() {
   meta = read_checkpoint(ckpt, sim_.particles);
   validate_checkpoint(ckpt, meta, sim_.particles, sim_.scene);
   // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
-  const bool fewer_allowed = !sim_.scene.sinks.empty();
+  const bool fewer_allowed = !sim_.sinks.empty();
   const size_t n = sim_.particles.size(), ns = sim_.particles.solid_count();
   const bool fits = fewer_allowed ? n <= seeded && ns <= seeded_solids : n == seeded && ns == seeded_solids;
   if (!fits)

@@ -49,6 +49,9 @@ class Loader {
     if (root.has("boundaries")) {
       Node bs = root["boundaries"];
       for (size_t i = 0, n = r_.array(bs, 0, "an array of boundaries"); i < n; ++i) boundary(bs[i]);
+      for (const auto& [face, path] : faces_needed_)
+        if (!contains(faces_closed_, face))
+          r_.fail(path, "expected a face that a \"walls\" boundary closes (list it in its faces), got \"" + face + "\"");
     }
     if (root.has("sinks")) {
       Node ss = root["sinks"];
@@ -201,11 +204,17 @@ class Loader {
     spec.hold_until = r_.number(r, "hold_until", ge(0), 0.0);
   }
 
-  // Checked by building it once (each boundary type reads its own keys).
+  // Checked by building it once (each boundary type reads its own keys); the faces it closes or needs closed
+  // (an absorbing layer lies in front of a face that walls close) are checked once all are read.
   void boundary(const Node& n) {
-    if (dim_ == 2) make_boundary<2>(r_, n, BoundaryContext<2>{context_size<2>(), static_cast<Real>(s_.domain.dx)});
-    else make_boundary<3>(r_, n, BoundaryContext<3>{context_size<3>(), static_cast<Real>(s_.domain.dx)});
+    if (dim_ == 2) boundary_faces(make_boundary<2>(r_, n, BoundaryContext<2>{context_size<2>(), static_cast<Real>(s_.domain.dx)}), n);
+    else boundary_faces(make_boundary<3>(r_, n, BoundaryContext<3>{context_size<3>(), static_cast<Real>(s_.domain.dx)}), n);
     s_.boundaries.push_back({n.j.at("type").get<std::string>(), n.j, n.path});
+  }
+  template <class B>
+  void boundary_faces(const B& b, const Node& n) {
+    for (const std::string& f : b->closed_faces()) faces_closed_.push_back(f);
+    if (const std::string f = b->needs_closed_face(); !f.empty()) faces_needed_.push_back({f, n.child("face")});
   }
   template <int dim>
   Vec<dim> context_size() const {
@@ -286,6 +295,8 @@ class Loader {
   SceneReader r_;
   int dim_;
   Scene s_;
+  Strings faces_closed_;                                     // by the boundaries read so far
+  std::vector<std::pair<std::string, std::string>> faces_needed_;  // face, path of the key that names it
 };
 
 // json::parse with duplicate object keys rejected (nlohmann would silently keep the last one).

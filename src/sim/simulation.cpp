@@ -30,6 +30,9 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   grid = Grid<dim>(domain_size, static_cast<Real>(s.domain.dx));
   for (const BoundarySpec& b : s.boundaries)
     boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{domain_size, grid.dx}));
+  sinks = s.sinks;
+  for (const auto& b : boundaries)
+    for (const SinkSpec& k : b->sinks()) sinks.push_back(k);
   seed_bodies<dim>(s, materials, boundaries, particles, &bed_);
   if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
   rigid.init(s, materials, particles, grid.dx);
@@ -109,7 +112,7 @@ void Simulation<dim>::advance(Real dt) {
   timer_.run(Phase::ConstitutiveUpdate, [&] { constitutive_update(particles, materials, dt); });
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] { advect_phase(dt); });
-  timer_.run(Phase::Sinks, [&] { remove_sunk_particles(particles, scene.sinks); });
+  timer_.run(Phase::Sinks, [&] { remove_sunk_particles(particles, sinks); });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
 }
@@ -142,7 +145,10 @@ void Simulation<dim>::boundary_fold() {
 // Moving obstacles take their position at the start of the step, then the grid velocities are updated.
 template <int dim>
 void Simulation<dim>::grid_update_phase(Real dt) {
-  for (const auto& b : boundaries) b->move_to(time_);
+  for (const auto& b : boundaries) {
+    b->move_to(time_);
+    b->prepare(*this, dt);
+  }
   grid_update(grid, gravity, dt, boundaries);
 }
 

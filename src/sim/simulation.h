@@ -60,6 +60,7 @@ class Simulation {
   Grid<dim> grid;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Boundary<dim>>> boundaries;
+  std::vector<SinkSpec> sinks;  // the scene's sinks and those of its boundaries (absorbing layers' spillways)
   RigidBodies<dim> rigid;
   Vec<dim> gravity, domain_size;
   Real max_wave_speed = 0;   // over particles, updated each step
