@@ -167,7 +167,7 @@ TEST(HazardProducts, StillLakeRastersAreGeoreferencedFlatAndDry) {
 }
 
 void expect_same_hazard(const TempDir& dir, const std::vector<std::string>& files) {
-  for (const std::string& other : {"other", "half"})
+  for (const std::string other : {"other", "half"})
     for (const std::string& f : files)
       EXPECT_EQ(read_bytes(dir / ("full/" + f)), read_bytes(dir / (other + "/" + f))) << other << "/" << f;
   const nlohmann::json full = read_json(dir / "full/summary.json")["hazard"];

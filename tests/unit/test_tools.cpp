@@ -58,7 +58,9 @@ TEST(Tools, RunupLinearTheoryTendsToTheRunupLaw) {
     const double law = 2.831 * std::sqrt(v[1]) * std::pow(v[0], 1.25);
     EXPECT_NEAR(v[5], law, 0.005 * law) << line;
     EXPECT_NEAR(v[4], v[5], 0.005 * law) << line;
-    if (v[2] > 4) EXPECT_NEAR(v[3] / law, 1.0, 0.05) << line;
+    if (v[2] > 4) {
+      EXPECT_NEAR(v[3] / law, 1.0, 0.05) << line;
+    }
   }
 }
 
