@@ -38,7 +38,7 @@ template <int dim>
 class TimeLoop {
  public:
   TimeLoop(const Scene& scene, const RunOptions& opt)
-      : scene_(scene), opt_(opt), sim_(scene, !opt.resume), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
+      : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
         files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
         e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
@@ -160,7 +160,7 @@ class TimeLoop {
 
 RunResult run_scene(const Scene& scene, const RunOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
-  if (opt.progress && !opt.resume && scene.time.settle > 0)
+  if (opt.progress && scene.time.settle > 0)
     std::cerr << "cdmpm: settling for " << scene.time.settle << " s before t = 0 (time.settle: solids elastic, "
               << "velocities damped at " << scene.time.settle_damping << " 1/s)\n";
   return scene.dim == 2 ? TimeLoop<2>(scene, opt).run() : TimeLoop<3>(scene, opt).run();

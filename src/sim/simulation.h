@@ -9,7 +9,7 @@
 // (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h).
 // The simulation owns its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output
 // time).
-// Settling (scene time.settle > 0, fresh runs only): before t = 0 the scene is stepped for time.settle seconds
+// Settling (scene time.settle > 0): before t = 0 the scene is stepped for time.settle seconds
 // with every solid elastic (no return mapping, so no damage) and, after each step, every particle's velocity and
 // APIC matrix scaled by exp(-zeta dt), zeta = time.settle_damping: dynamic relaxation (Underwood 1983) to the
 // elastic equilibrium of the seeded bodies under gravity and the water's pressure, e.g. a glacier's cliff face,
@@ -37,7 +37,8 @@ namespace cdmpm {
 template <int dim>
 class Simulation {
  public:
-  // Seeds the scene; settles it (see above) unless `settle` is false (a run resumed from a checkpoint).
+  // Seeds the scene; settles it (see above) unless `settle` is false. A resumed run settles too, before its
+  // checkpoint replaces the particles, so that the initial energies of its summary are those of the settled state.
   explicit Simulation(const Scene& scene, bool settle = true);
 
   // Largest stable time step for the current state (before clamping to output times).
