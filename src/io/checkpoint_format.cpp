@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -37,9 +38,9 @@ std::string bad_meta(const CheckpointMeta& m, const Scene& scene) {
   // are NaN when the block was too small to measure (probe/iceberg_tracker.h).
   const auto has_inf = [](const std::vector<double>& v) { return std::any_of(v.begin(), v.end(), [](double x) { return std::isinf(x); }); };
   const size_t base = 5 + static_cast<size_t>(scene.dim), nb = m.first_iceberg.size();
-  if (has_inf(m.probe_state) || !finite_all(m.rigid_bodies) ||
-      (nb > 0 && !finite_all(std::vector<double>(m.first_iceberg.begin(), m.first_iceberg.begin() + std::min(nb, base)))) ||
-      has_inf(m.first_iceberg))
+  const auto measured_end = m.first_iceberg.begin() + static_cast<std::ptrdiff_t>(std::min(nb, base));
+  if (has_inf(m.probe_state) || !finite_all(m.rigid_bodies) || has_inf(m.first_iceberg) ||
+      !std::all_of(m.first_iceberg.begin(), measured_end, [](double x) { return std::isfinite(x); }))
     return "non-finite probe, iceberg or rigid-body value";
   if (m.probe_state.size() > 64 * (scene.probes.size() + 1) || (nb != 0 && nb != base && nb != base + 2))
     return "bad record length";
