@@ -37,6 +37,7 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_eqip"), "--skip-run", "--out", none}),
                         "validate_eqip", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/runup_linear.py"), "0.1-2.5"}), "runup_linear", "0.1-2.5");
+  expect_one_line_error(run_program(kPython, {source_path("tools/cliff_stress.py"), none, "0"}), "cliff_stress", none);
 }
 
 // tools/runup_linear.py against the theory it evaluates (Synolakis 1987): its asymptotic column is the run-up law
