@@ -191,6 +191,13 @@ class Loader {
     if (!traits.solid_state || traits.rigid)
       r_.fail(n.path, "only a body of an ice material (\"type\": \"ice\") takes this key");
     spec.crevasses = CrevasseField::parse(r_, n, spec.shape);
+    if (spec.crevasses->water_depth > 0) {
+      const Node w = n["water_material"];
+      const int k = material_ref(w);
+      const auto t = s_.materials[k].traits();
+      if (!t.fluid || t.rigid) r_.expected(w, "the name of a fluid material (\"type\": \"water\")");
+      spec.crevasses->water_material_index = k;
+    }
   }
 
   // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds}, all optional.

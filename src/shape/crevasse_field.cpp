@@ -16,7 +16,8 @@ constexpr double kMaxSamples = 1e6;
 CrevasseField CrevasseField::parse(const SceneReader& r, const Node& n, const Shape& shape) {
   if (!n.j.is_object()) r.expected(n, "an object");
   const int dim = r.dim();
-  Strings keys = {"seed", "spacing", "spacing_std", "depth", "depth_std", "width", "region", "surface", "max_depth"};
+  Strings keys = {"seed", "spacing", "spacing_std", "depth", "depth_std", "width", "region", "surface", "max_depth",
+                  "water_depth", "water_material"};
   if (dim == 3) keys.push_back("length");
   r.object(n, keys);
   CrevasseField c;
@@ -50,6 +51,9 @@ CrevasseField CrevasseField::parse(const SceneReader& r, const Node& n, const Sh
     c.y_max = shape.upper(1);
     c.length = r.number(n, "length", gt(0), 5 * c.spacing);
   }
+  c.water_depth = r.number(n, "water_depth", {0, c.max_depth, false, false}, 0.0);
+  if (c.water_depth > 0) c.water_material = r.string(r.required(n, "water_material"));
+  else if (n.has("water_material")) r.fail(n.child("water_material"), "needs \"water_depth\" > 0 (the depth of water in each crevasse [m])");
   // A bound on the work and on crevasses.csv (a spacing or length far below the particle spacing is a mistake).
   const double samples = std::floor((c.x_max - c.x_min) / c.spacing) * static_cast<double>(c.station_ys().size());
   if (samples > kMaxSamples)
@@ -133,14 +137,14 @@ std::vector<CrevasseField::Station> CrevasseField::stations() const {
 }
 
 std::string CrevasseField::csv_header(int dim) {
-  return dim == 3 ? "body,crevasse,y,x,depth,width,clipped" : "body,crevasse,x,depth,width,clipped";
+  return dim == 3 ? "body,crevasse,y,x,depth,width,clipped,water_depth" : "body,crevasse,x,depth,width,clipped,water_depth";
 }
 
 void CrevasseField::write_csv(std::ostream& out, size_t body) const {
   for (const Station& s : stations()) {
     out << body << ',' << s.crevasse << ',';
     if (dim == 3) out << s.y << ',';
-    out << s.x << ',' << s.depth << ',' << width << ',' << (s.clipped ? 1 : 0) << '\n';
+    out << s.x << ',' << s.depth << ',' << width << ',' << (s.clipped ? 1 : 0) << ',' << std::min(water_depth, s.depth) << '\n';
   }
 }
 

@@ -19,11 +19,17 @@
 // A crevasse is a vertical slot of width w (the opening) cut down from the body's top surface: a lattice
 // point at (x, y, z) is left empty when |x - x_i(y)| < w / 2 and z > top - d_i(y), top the highest ice of its
 // lattice column or the given `surface` elevation (sim/seeding.cpp).
+// Water in crevasses (keys water_depth d_w and water_material): each crevasse holds water from its bottom up to
+// min(d_w, d_i) above it, seeded as particles of the fluid material at rest and hydrostatic below that level. Water
+// standing in a crevasse pushes its walls apart with rho_w g (level - z) and deepens a dry crevasse's Nye depth
+// R_xx / (rho_i g) by (rho_w / rho_i) d_w (Benn et al. 2007, eq. 4), the load that drives crevasses through a
+// glacier's front (docs/eqip_sermia.md).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "scene/scene_reader.h"
@@ -45,10 +51,13 @@ class CrevasseField {
   double max_depth = 0;    // depths are clipped to [0, max_depth] [m]
   double length = 0;       // 3D: length over which depth and position vary along y [m]
   double y_min = 0, y_max = 0;  // 3D: the body's extent along y [m]
+  double water_depth = 0;        // d_w, water standing in each crevasse above its bottom [m] (0: dry)
+  std::string water_material;    // the fluid that fills them (a material's name)
+  int water_material_index = -1; // resolved by the scene loader
   int dim = 2;
 
   // "crevasses": {"seed", "spacing", "spacing_std", "depth", "depth_std", "width", "region", "surface",
-  // "max_depth", "length"} of a body with bounding box `shape` (docs/scenes.md#crevasses). Realises the field.
+  // "max_depth", "length", "water_depth", "water_material"} of a body with bounding box `shape` (docs/scenes.md#crevasses). Realises the field.
   static CrevasseField parse(const SceneReader& r, const Node& n, const Shape& shape);
 
   // Computes the number of crevasses and the standardisation of the noise (called by parse; again after a

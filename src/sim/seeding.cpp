@@ -1,7 +1,9 @@
 // seeding.cpp - filling the bodies with particles (seeding.h).
 #include "sim/seeding.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "scene/scene_reader.h"
 #include "sim/rigid_bodies.h"
@@ -28,13 +30,21 @@ struct Tilted {
   }
 };
 
-// One body's seeding: which lattice points it fills, and the particle it puts at each.
+// One body's seeding: which lattice points it fills, and the particle it puts at each. With `crevasse_water`,
+// the water standing in the crevasses of an ice body instead (shape/crevasse_field.h): the lattice points its
+// crevasses cut up to their water level, as particles of the water material.
 template <int dim>
 class BodySeeder {
  public:
   BodySeeder(const Scene& scene, const BodySpec& body, const std::vector<Material>& materials,
-             const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries)
-      : scene_(scene), body_(body), mat_(materials[body.material_index]), boundaries_(boundaries), self_(body) {
+             const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, bool crevasse_water = false)
+      : scene_(scene),
+        body_(body),
+        crevasse_water_(crevasse_water),
+        material_index_(crevasse_water ? body.crevasses->water_material_index : body.material_index),
+        mat_(materials[material_index_]),
+        boundaries_(boundaries),
+        self_(body) {
     n_ = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
     h_ = scene.domain.dx / n_;
     if (!mat_.traits().rigid)
@@ -77,8 +87,10 @@ class BodySeeder {
           bed_normal.push_back(n);
         }
       }
-      if (body_.crevasses) cut_crevasse(column);
-      seed_column(column, particles);
+      std::optional<double> level;
+      if (crevasse_water_) level = keep_crevasse_water(column);
+      else if (body_.crevasses) cut_crevasse(column);
+      seed_column(column, particles, level);
       if (!bed_column.empty()) {
         seed_column(bed_column, bed->particles);
         bed->normal.insert(bed->normal.end(), bed_normal.begin(), bed_normal.end());
@@ -115,20 +127,41 @@ class BodySeeder {
     return solid == 1 && layer == 1 ? Fill::BedLayer : Fill::None;
   }
 
-  // Removes the lattice points of a column in a surface crevasse (shape/crevasse_field.h): those above the
-  // crevasse's bottom, its depth below the column's top ice (or the field's given surface).
-  void cut_crevasse(std::vector<DVec<dim>>& column) const {
+  // The crevasse cutting a column (shape/crevasse_field.h): its depth d (0 if none) and its bottom, d below the
+  // column's top ice (or the field's given surface).
+  struct Cut {
+    double depth = 0, bottom = 0;
+  };
+  Cut crevasse_cut(const std::vector<DVec<dim>>& column) const {
     constexpr int up = vertical_axis<dim>;
-    if (column.empty()) return;
+    if (column.empty()) return {};
     const CrevasseField& field = *body_.crevasses;
     const double d = field.cut_depth(column.front()[0], dim == 3 ? column.front()[1] : 0.0);
-    if (d <= 0) return;
-    const double bottom = (field.surface ? *field.surface : column.back()[up] + 0.5 * h_) - d;
-    std::erase_if(column, [&](const DVec<dim>& x) { return x[up] > bottom; });
+    if (d <= 0) return {};
+    return {d, (field.surface ? *field.surface : column.back()[up] + 0.5 * h_) - d};
   }
 
-  // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level.
-  void seed_column(const std::vector<DVec<dim>>& column, Particles<dim>& particles) const {
+  // Removes the lattice points of a column in a surface crevasse: those above the crevasse's bottom.
+  void cut_crevasse(std::vector<DVec<dim>>& column) const {
+    const Cut c = crevasse_cut(column);
+    if (c.depth > 0) std::erase_if(column, [&](const DVec<dim>& x) { return x[vertical_axis<dim>] > c.bottom; });
+  }
+
+  // Keeps the lattice points of a column that its crevasse cuts and the crevasse's water fills: above the bottom
+  // and at most water_depth above it. Returns the water's level (its free surface) in this column.
+  double keep_crevasse_water(std::vector<DVec<dim>>& column) const {
+    const Cut c = crevasse_cut(column);
+    const double level = c.bottom + std::min(body_.crevasses->water_depth, c.depth);
+    std::erase_if(column, [&](const DVec<dim>& x) {
+      return c.depth <= 0 || x[vertical_axis<dim>] <= c.bottom || x[vertical_axis<dim>] > level;
+    });
+    return level;
+  }
+
+  // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level
+  // (`level_override`, when given, for the water in a crevasse).
+  void seed_column(const std::vector<DVec<dim>>& column, Particles<dim>& particles,
+                   std::optional<double> level_override = std::nullopt) const {
     constexpr int up = vertical_axis<dim>;
     const double g = -static_cast<Real>(scene_.gravity[up]);
     const bool loaded = body_.hydrostatic && g > 0;
@@ -137,6 +170,7 @@ class BodySeeder {
     const double surface = body_.surface_level ? *body_.surface_level : body_.shape.upper(up);
     double level = solid && !body_.surface_level ? top : surface;
     if (body_.solitary && !column.empty()) level = body_.solitary->surface(column.front()[0]);
+    if (level_override) level = *level_override;
     const Real rho0 = mat_.density();
     for (const auto& x : column) {
       const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
@@ -152,7 +186,7 @@ class BodySeeder {
         vp[0] += static_cast<Real>(body_.solitary->u(x[0], g));
         vp[up] += static_cast<Real>(body_.solitary->w(x[0], x[up], g));
       }
-      const MaterialId id = static_cast<MaterialId>(body_.material_index);
+      const MaterialId id = static_cast<MaterialId>(material_index_);
       if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha);
       else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);
     }
@@ -160,6 +194,8 @@ class BodySeeder {
 
   const Scene& scene_;
   const BodySpec& body_;
+  bool crevasse_water_;
+  int material_index_;
   const Material& mat_;
   const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries_;
   Tilted<dim> self_;
@@ -191,6 +227,15 @@ void seed_bodies(const Scene& scene, std::vector<Material>& materials,
         throw SceneError(scene.path + ": bodies[" + std::to_string(i) + "]: seeds no particle (its shape is smaller "
                          "than the particle spacing, or lies inside its holes, a rigid body or the solid of a boundary)");
     }
+  // The water in the crevasses of ice bodies, after every other fluid (fluids follow solids in memory).
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodySpec& b = scene.bodies[i];
+    if (!b.crevasses || b.crevasses->water_depth <= 0) continue;
+    Material& water = materials[b.crevasses->water_material_index];
+    const BodySeeder<dim> seeder(scene, b, materials, boundaries, true);
+    water.half_spacing = std::max(water.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
+    seeder.seed(particles, nullptr);
+  }
 }
 
 template void seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&, Particles<2>&,

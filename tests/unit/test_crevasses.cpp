@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "cli_helpers.h"
+#include "material/stress.h"
 #include "scene/scene_loader.h"
 #include "shape/crevasse_field.h"
 #include "shape/simplex_noise.h"
@@ -237,6 +238,55 @@ TEST(Crevasses, SeedingEmptiesTheCrevassesAndKeepsTheRestOfTheIce) {
   EXPECT_GT(area, 10 * 4 * 20);  // the crevasses are there (mean depth 30 m)
 }
 
+// Water in the crevasses (water_depth 20 m of "water", density 1000): every particle of the water material lies in
+// a slot between its bottom 100 - d_i and its level 100 - d_i + min(20, d_i), every lattice point there holds one
+// (the same lattice rounding as the ice), so the water's area is sum_i w min(20, d_i) up to one lattice row at the
+// bottom and one at the level in each of the w/h columns of a slot; and the water starts at rest and hydrostatic
+// below its level: p = rho_w g (level - y) from the particle's own volume ratio, within the round-off of J
+// (single-precision reals: 1e-6 relative of the bulk modulus's 1e6 Pa, 1 Pa). The ice is what it is dry.
+TEST(Crevasses, WaterFillsEachCrevasseToItsLevelAtRestAndHydrostatic) {
+  nlohmann::json c = {{"seed", 3}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 30}, {"depth_std", 10}, {"width", 4}};
+  const Scene dry = scene_from_json(ice_scene(2, c), "dry.json");
+  c["water_depth"] = 20;
+  c["water_material"] = "water";
+  const Scene s = scene_from_json(ice_scene(2, c), "wet.json");
+  const auto st = s.bodies[0].crevasses->stations();
+  const int water = s.material_index("water");
+  auto level_at = [&](double x, double y, double& level) {
+    for (const auto& k : st)
+      if (std::abs(x - k.x) < 2 && y > 100 - k.depth && y <= 100 - k.depth + std::min(20.0, k.depth)) {
+        level = 100 - k.depth + std::min(20.0, k.depth);
+        return true;
+      }
+    return false;
+  };
+  Simulation<2> sim(s, false);
+  const Simulation<2> sim_dry(dry, false);
+  size_t in_water = 0;
+  double worst = 0;
+  for (size_t q = 0; q < sim.particles.size(); ++q) {
+    if (sim.particles.material[q] != water) continue;
+    double level = 0;
+    ASSERT_TRUE(level_at(sim.particles.x[q][0], sim.particles.x[q][1], level)) << "water particle " << q << " outside the water";
+    EXPECT_EQ(sim.particles.v[q], Vec<2>::Zero());
+    const double p = particle_pressure(sim.materials[water], sim.particles, q);
+    worst = std::max(worst, std::abs(p - 1000 * 9.81 * (level - sim.particles.x[q][1])));
+    ++in_water;
+  }
+  EXPECT_LT(worst, 1.0);
+  size_t lattice = 0;
+  double level = 0;
+  for (int i = 10; i < 410; ++i)
+    for (int j = 0; j < 100; ++j) lattice += level_at(i + 0.5, j + 0.5, level);
+  EXPECT_EQ(in_water, lattice);
+  double area = 0;
+  for (const auto& k : st) area += 4 * std::min(20.0, k.depth);
+  EXPECT_NEAR(static_cast<double>(in_water), area, 8.0 * static_cast<double>(st.size()));
+  EXPECT_GT(area, 10 * 4 * 15);
+  EXPECT_EQ(sim.particles.solid_count(), sim_dry.particles.solid_count());
+  EXPECT_EQ(sim.particles.size(), sim_dry.particles.size() + in_water);
+}
+
 // A sloping top (a polygon from 100 m high at x = 10 to 80 m at x = 410) with crevasses in a region behind the
 // front, [210, 410]: each slot is cut from its own lattice column's top ice (the highest lattice point + h/2),
 // so the lattice points missing are exactly those in a slot above that column's top minus the depth; with a
@@ -344,7 +394,10 @@ TEST(Crevasses, BadKeysAreRefusedNamingTheKey) {
                                    {"region", {0, 500}, "bodies[0].crevasses.region"},
                                    {"max_depth", 100, "bodies[0].crevasses.max_depth"},
                                    {"length", 10, "bodies[0].crevasses"},  // 3D only
-                                   {"spacing", 1e-4, "bodies[0].crevasses"}};  // 4 million crevasses
+                                   {"spacing", 1e-4, "bodies[0].crevasses"},  // 4 million crevasses
+                                   {"water_depth", -1, "bodies[0].crevasses.water_depth"},
+                                   {"water_depth", 20, "bodies[0].crevasses"},  // no water_material
+                                   {"water_material", "water", "bodies[0].crevasses.water_material"}};  // no water_depth
   for (const auto& c : cases) {
     nlohmann::json cr = good;
     cr[c.key] = c.value;
@@ -383,7 +436,7 @@ TEST(CrevassesCli, BadKeyExitsWithTwoAndAGoodSceneWritesCrevassesCsv) {
   const CliResult good = run_cdmpm({"run", dir / "good.json", "--out", dir / "good", "--quiet", "--steps", "1"});
   ASSERT_EQ(good.exit_code, 0) << good.output;
   const CsvTable t = read_csv_table(dir / "good/crevasses.csv");
-  EXPECT_EQ(t.header, (std::vector<std::string>{"body", "crevasse", "x", "depth", "width", "clipped"}));
+  EXPECT_EQ(t.header, (std::vector<std::string>{"body", "crevasse", "x", "depth", "width", "clipped", "water_depth"}));
   ASSERT_EQ(t.rows.size(), 10u);
   for (double d : t.numbers("depth")) EXPECT_NEAR(d, 30, 1e-9);  // no depth_std: every crevasse at the mean
   for (double w : t.numbers("width")) EXPECT_EQ(w, 4);
