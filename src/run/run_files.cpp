@@ -70,7 +70,6 @@ void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
   csv_ << probes_.csv_header() << '\n';
   write_probes();
   write_frame();
-  hazard_.init(sim_);
 }
 
 template <int dim>
