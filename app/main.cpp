@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
     cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
 #ifdef CDMPM_MPI
     if (cdmpm::mpi::size() > 1) {
-      const std::string first_phase = " is not distributed over MPI ranks yet (issue 18, first phase): run it with one process";
+      const std::string first_phase = ": not distributed over MPI ranks yet (issue 18, first phase); run it with one process";
       if (!resume_dir.empty()) throw std::runtime_error("--resume" + first_phase);
       if (const std::string what = cdmpm::distributable(scene); !what.empty())
         throw std::runtime_error(scene.path + ": " + what + first_phase);
