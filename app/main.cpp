@@ -195,7 +195,6 @@ int main(int argc, char** argv) {
 #ifdef CDMPM_MPI
     if (cdmpm::mpi::size() > 1) {
       const std::string first_phase = ": not distributed over MPI ranks yet (issue 18, first phase); run it with one process";
-      if (!resume_dir.empty()) throw std::runtime_error("--resume" + first_phase);
       if (const std::string what = cdmpm::distributable(scene); !what.empty())
         throw std::runtime_error(scene.path + ": " + what + first_phase);
     }

@@ -4,8 +4,8 @@
 // (maxima and minima through parallel/reduction.h). Anything else is refused up front (exit code 2) rather than
 // run wrongly: rigid bodies (sums over a body's particles in particle order), the well-balanced bathymetry (its bed
 // layer of fixed particles is not partitioned), absorbing layers (they measure the surface across ranks), static
-// slip box obstacles (their mirror pairs can straddle two ranks), sinks (their removal is not merged with the order
-// keys), and resuming from a checkpoint.
+// slip box obstacles (their mirror pairs can straddle two ranks) and sinks (their removal is not merged with the
+// order keys). Resuming works on any number of ranks (Simulation::restore partitions the loaded particles again).
 #pragma once
 
 #include <string>

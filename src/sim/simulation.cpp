@@ -79,8 +79,8 @@ void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_refer
   steps_ = step_count;
   wave_dt_at_start = wave_dt_reference;
 #ifdef CDMPM_MPI
-  // The loaded particles are the one-process array: partitioned again, their keys their order (one rank: a resumed
-  // run of several is refused, app/main.cpp).
+  // The loaded particles (every rank read the whole checkpoint) are the one-process array: partitioned again, each
+  // rank keeping its own, their keys their order.
   if (domain_) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
 #endif
   update_speeds();
