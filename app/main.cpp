@@ -25,6 +25,22 @@
 #include "run/runner.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
+#ifdef CDMPM_MPI
+#include "parallel/communicator.h"
+#include "parallel/distributable.h"
+#include "parallel/domain.h"
+#endif
+
+namespace {
+// Rank 0 speaks for a distributed run (every rank of the MPI build reaches the same verdicts); one process always.
+bool speaks() {
+#ifdef CDMPM_MPI
+  return cdmpm::mpi::rank() == 0;
+#else
+  return true;
+#endif
+}
+}  // namespace
 
 // `cdmpm check`: each scene's validity, a summary and the estimate of its run; exit 2 if any is invalid or too
 // big for this machine.
@@ -75,6 +91,9 @@ void resume_inputs(const std::string& dir, std::string& scene_path, std::vector<
 
 int main(int argc, char** argv) {
   cdmpm::choose_omp_wait_policy(argv);  // may execute the program again (parallel/omp_wait_policy.h)
+#ifdef CDMPM_MPI
+  const cdmpm::mpi::Session mpi_session(argc, argv);  // `mpirun -np N cdmpm run SCENE` (docs/architecture.md)
+#endif
   CLI::App app{"cdmpm: Material Point Method simulator of glacier calving and the tsunamis it raises"};
   app.set_version_flag("--version", std::string("cdmpm ") + CDMPM_VERSION);
   app.require_subcommand(1);
@@ -97,6 +116,12 @@ int main(int argc, char** argv) {
   run->add_flag("--quiet", quiet, "No progress line");
   bool force = false;
   run->add_flag("--force", force, "Run even if the estimate exceeds the machine's memory or the frame limit");
+#ifdef CDMPM_MPI
+  run->add_option("--rebalance", cdmpm::rebalance_threshold,
+                  "Distributed run: partition the blocks again when the particle imbalance max/mean over the ranks "
+                  "exceeds this at a particle sort (default 1.1; results do not depend on it)")
+      ->check(CLI::Range(1.0, 1e9));
+#endif
 
   std::vector<std::string> check_paths;
   auto* check = app.add_subcommand("check", "Validate scenes and print, for each, a summary and what a run would cost");
@@ -167,15 +192,22 @@ int main(int argc, char** argv) {
     if (scene_path.empty()) throw std::runtime_error("run: a scene file is required (or --resume DIR)");
     scene = cdmpm::load_scene(scene_path, overrides);
     cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
+#ifdef CDMPM_MPI
+    if (cdmpm::mpi::size() > 1) {
+      const std::string first_phase = ": not distributed over MPI ranks yet (issue 18, first phase); run it with one process";
+      if (const std::string what = cdmpm::distributable(scene); !what.empty())
+        throw std::runtime_error(scene.path + ": " + what + first_phase);
+    }
+#endif
   } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
-    std::cerr << "cdmpm: error: " << e.what() << "\n";
+    if (speaks()) std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;
   }
 
   cdmpm::RunOptions opt;
   opt.command_line.assign(argv, argv + argc);
   opt.threads = threads;
-  opt.progress = !quiet;
+  opt.progress = !quiet && speaks();
   opt.max_steps = max_steps;
   if (!resume_dir.empty()) {
     if (!out_dir.empty() && std::filesystem::path(out_dir) != std::filesystem::path(resume_dir)) {
@@ -188,18 +220,24 @@ int main(int argc, char** argv) {
     opt.out_dir = out_dir.empty() ? "output/" + scene.name : out_dir;
   }
   cdmpm::install_interrupt_handlers();
+  // A failure mid-run: the message and the exit code (2 for input, 1 otherwise). One rank of a distributed run that
+  // fails ends them all, the others would wait for it forever.
+  auto fail = [](const std::exception& e, int code) {
+#ifdef CDMPM_MPI
+    if (cdmpm::mpi::size() > 1) cdmpm::mpi::abort(e.what(), code);
+#endif
+    std::cerr << "cdmpm: error: " << e.what() << "\n";
+    return code;
+  };
   try {
     const cdmpm::RunResult r = cdmpm::run_scene(scene, opt);
-    std::cout << "cdmpm: " << r.status << "; outputs in " << opt.out_dir << "\n";
+    if (speaks()) std::cout << "cdmpm: " << r.status << "; outputs in " << opt.out_dir << "\n";
     return r.exit_code;
   } catch (const cdmpm::CheckpointError& e) {
-    std::cerr << "cdmpm: error: " << e.what() << "\n";
-    return 2;
+    return fail(e, 2);
   } catch (const cdmpm::SceneError& e) {  // found while building the run, e.g. a body that seeds no particle
-    std::cerr << "cdmpm: error: " << e.what() << "\n";
-    return 2;
+    return fail(e, 2);
   } catch (const std::exception& e) {
-    std::cerr << "cdmpm: error: " << e.what() << "\n";
-    return 1;
+    return fail(e, 1);
   }
 }

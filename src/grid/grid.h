@@ -174,8 +174,9 @@ struct Grid {
 
   // Makes active exactly the blocks touched by particles whose stencil base lies in one of
   // `particle_blocks` (block indices, ascending): each such block b and b + {0,1}^dim. Then zeroes the
-  // active nodes. Deterministic: slots follow block index order.
-  void activate(const std::vector<uint32_t>& particle_blocks) {
+  // active nodes. Deterministic: slots follow block index order. `extra_blocks` are made active as they are (a
+  // distributed run's own blocks that only other ranks' particles touch, parallel/halo_exchange.h).
+  void activate(const std::vector<uint32_t>& particle_blocks, const std::vector<uint32_t>& extra_blocks = {}) {
     for (const uint32_t b : active_) slot_[b] = -1;
     active_.clear();
     for (const uint32_t b : particle_blocks) {
@@ -189,6 +190,11 @@ struct Grid {
         }
       }
     }
+    for (const uint32_t b : extra_blocks)
+      if (slot_[b] < 0) {
+        slot_[b] = 0;
+        active_.push_back(b);
+      }
     std::sort(active_.begin(), active_.end());
     for (size_t s = 0; s < active_.size(); ++s) slot_[active_[s]] = static_cast<int32_t>(s);
     mass.resize(node_count());

@@ -3,17 +3,26 @@
 // rigid-body sums, the hazard record's per-column extremes. Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
 // must not depend on the thread count), then passes its partial result here.
 //
-// One process (this build): every function is the identity. A distributed build (docs/architecture.md) makes
-// them collective: max/min are exact in any order; sums are combined in rank order of a partition that
-// follows the global block order, so a result does not depend on how the work was split within a rank.
+// One process (the default build): every function is the identity. The MPI build (-DCDMPM_MPI=ON,
+// parallel/communicator.h) makes them collective: max/min are exact in any order; sums are combined in rank order
+// of a partition that follows the global block order (parallel/partition.h), so a result does not depend on how
+// the work was split within a rank (output-only sums may still differ from one process's in the last bits, as
+// across thread counts; the written outputs are therefore evaluated on the gathered state, docs/architecture.md).
+// Every rank must call the same reductions in the same order.
 // Not routed through it yet: iceberg detection (probe/icebergs.h), which needs every ice cell of the domain, a
-// gather rather than a reduction.
+// gather rather than a reduction (refused in a distributed run).
 #pragma once
 
+#include <type_traits>
 #include <vector>
+
+#ifdef CDMPM_MPI
+#include "parallel/communicator.h"
+#endif
 
 namespace cdmpm::global {
 
+#ifndef CDMPM_MPI
 inline double sum(double local) { return local; }
 inline double max(double local) { return local; }
 inline double min(double local) { return local; }
@@ -23,5 +32,39 @@ template <class T>
 void max(std::vector<T>&) {}
 template <class T>
 void min(std::vector<T>&) {}
+#else
+namespace detail {
+// The scalar of T (T itself, or the Scalar of a fixed-size Eigen type) and how many T holds.
+template <class T, class = void>
+struct ScalarOf {
+  using type = T;
+};
+template <class T>
+struct ScalarOf<T, std::void_t<typename T::Scalar>> {
+  using type = typename T::Scalar;
+};
+template <class T, class F>
+void apply(std::vector<T>& v, F&& f) {
+  using S = typename ScalarOf<T>::type;
+  static_assert(std::is_floating_point_v<S> && sizeof(T) % sizeof(S) == 0, "reduce floating-point values");
+  f(reinterpret_cast<S*>(v.data()), v.size() * (sizeof(T) / sizeof(S)));
+}
+}  // namespace detail
+inline double sum(double local) { return mpi::sum(local); }
+inline double max(double local) { return mpi::max(local); }
+inline double min(double local) { return mpi::min(local); }
+template <class T>
+void sum(std::vector<T>& v) {
+  detail::apply(v, [](auto* p, size_t n) { mpi::sum(p, n); });
+}
+template <class T>
+void max(std::vector<T>& v) {
+  detail::apply(v, [](auto* p, size_t n) { mpi::max(p, n); });
+}
+template <class T>
+void min(std::vector<T>& v) {
+  detail::apply(v, [](auto* p, size_t n) { mpi::min(p, n); });
+}
+#endif
 
 }  // namespace cdmpm::global

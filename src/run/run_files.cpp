@@ -11,6 +11,7 @@
 #include "io/scene_fingerprint.h"
 #include "run/output_dir.h"
 #include "io/vtu_writer.h"
+#include "parallel/reduction.h"
 
 namespace cdmpm {
 namespace fs = std::filesystem;
@@ -70,13 +71,15 @@ void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
   csv_ << probes_.csv_header() << '\n';
   write_probes();
   write_frame();
-  hazard_.init(sim_);
 }
 
 template <int dim>
 void RunFiles<dim>::resume() {
   const std::string ckpt = path("checkpoint.bin").string();
-  const size_t seeded = sim_.particles.size(), seeded_solids = sim_.particles.solid_count();
+  // What the scene seeds (over all ranks of a distributed run, which then partitions the loaded particles again:
+  // Simulation::restore).
+  const auto seeded = static_cast<size_t>(global::sum(double(sim_.particles.size())));
+  const auto seeded_solids = static_cast<size_t>(global::sum(double(sim_.particles.solid_count())));
   meta = read_checkpoint(ckpt, sim_.particles);
   validate_checkpoint(ckpt, meta, sim_.particles, sim_.scene);
   // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.

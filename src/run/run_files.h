@@ -30,7 +30,7 @@ class RunFiles {
   RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs,
            HazardMap<dim>& hazard);
   // Creates the output files (run.json records `command_line`) and writes the initial probe sample, frame and
-  // icebergs; the hazard record takes its initial state.
+  // icebergs (the run then gives the hazard record its initial state, on every rank of a distributed run).
   void start(const std::vector<std::string>& command_line);
   // Loads the checkpoint into the simulation, probes, tracker and hazard record and reopens the files for appending.
   void resume();

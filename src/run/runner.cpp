@@ -9,10 +9,12 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "hazard/hazard_report.h"
+#include "parallel/reduction.h"
 #include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
@@ -23,6 +25,14 @@ namespace cdmpm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The totals of the whole state (rank 0 of a distributed run; zero elsewhere, where nothing is written).
+template <int dim>
+EnergyTotals whole_state_energy(Simulation<dim>& sim) {
+  EnergyTotals e;
+  sim.with_whole_state([&] { e = energy_totals(sim.particles, sim.materials, sim.gravity); });
+  return e;
+}
 
 // A time step that has collapsed below 1e-3 of the acoustic limit at the start means a blow-up.
 template <int dim>
@@ -41,11 +51,12 @@ class TimeLoop {
       : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
         files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
-        e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
+        e0_(whole_state_energy(sim_)), progress_(opt.progress, 0, scene.time.end) {}
 
   RunResult run() {
     if (opt_.resume) resume();
-    else files_.start(opt_.command_line);
+    else sim_.with_whole_state([&] { files_.start(opt_.command_line); });
+    if (!opt_.resume) hazard_.init(sim_);
     times_.setup = elapsed();
     progress_.start_at(sim_.time());
     RunResult result{"completed", "", 0};
@@ -66,13 +77,15 @@ class TimeLoop {
       progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
-    if (result.status != "unstable") files_.checkpoint();
+    if (result.status != "unstable") sim_.with_whole_state([&] { files_.checkpoint(); });
     progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
-    const nlohmann::json hazard = hazard_.active() ? write_hazard_report(opt_.out_dir, hazard_, scene_) : nlohmann::json();
-    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
+    sim_.with_whole_state([&] {
+      const nlohmann::json hazard = hazard_.active() ? write_hazard_report(opt_.out_dir, hazard_, scene_) : nlohmann::json();
+      write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
+    });
     return result;
   }
 
@@ -91,7 +104,7 @@ class TimeLoop {
     const double next_frame = frames_.next(files_.meta.frame_index, scene_.time.end);
     const double next_sample = samples_.next(files_.meta.probe_index, scene_.time.end);
     const double target = std::min(next_frame, next_sample);
-    times_.particle_steps += double(sim_.particles.size());
+    times_.particle_steps += global::sum(double(sim_.particles.size()));
     const bool hit = sim_.time() + dt >= target;
     if (hit) sim_.step_until(target);
     else sim_.step(dt);
@@ -104,19 +117,38 @@ class TimeLoop {
 
   void sample() {
     ++files_.meta.probe_index;
-    files_.write_probes();
-    if (files_.sample_icebergs() && opt_.progress) {
-      const auto& f = icebergs_.first_;
-      std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
-                   f[0], f[1], f[2]);
-    }
+    sim_.with_whole_state([&] {
+      files_.write_probes();
+      if (files_.sample_icebergs() && opt_.progress) {
+        const auto& f = icebergs_.first_;
+        std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
+                     f[0], f[1], f[2]);
+      }
+    });
+    share_first_iceberg();
+  }
+
+  // The first iceberg, found on the whole state (rank 0 of a distributed run), decides when the run stops on every
+  // rank (stop_reason): every rank takes rank 0's record (identity in one process).
+  void share_first_iceberg() {
+    if (!icebergs_.active()) return;
+    std::vector<double>& f = icebergs_.first_;
+    const bool mine = !f.empty();
+    const size_t n = static_cast<size_t>(global::max(mine ? double(f.size()) : 0.0));
+    if (n == 0) return;
+    std::vector<double> all(n, -std::numeric_limits<double>::infinity());
+    if (mine) std::copy(f.begin(), f.end(), all.begin());
+    global::max(all);
+    f = all;
   }
 
   void frame() {
     ++files_.meta.frame_index;
-    files_.write_frame();
     const int every = scene_.output.checkpoint_every;
-    if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
+    sim_.with_whole_state([&] {
+      files_.write_frame();
+      if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
+    });
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)
@@ -135,7 +167,8 @@ class TimeLoop {
 
   // SIGINT or SIGTERM (run/interrupt.h): the run ends after this step, with a checkpoint.
   std::optional<RunResult> interrupted() const {
-    if (const int sig = interrupt_signal())
+    // A distributed run stops on every rank after the same step when any rank was signalled.
+    if (const int sig = static_cast<int>(global::max(double(interrupt_signal()))))
       return RunResult{"interrupted", std::string("stopped by ") + interrupt_signal_name(sig), 128 + sig};
     return std::nullopt;
   }

@@ -65,6 +65,13 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
   s["command_line"] = options.command_line;
   s["git_commit"] = CDMPM_GIT_COMMIT;
   s["threads"] = omp_get_max_threads();
+#ifdef CDMPM_MPI
+  // A distributed run (docs/architecture.md): its ranks, the repartitions, and rank 0's share of the traffic.
+  if (const Domain<dim>* d = sim.domain())
+    s["distributed"] = {{"ranks", mpi::size()}, {"repartitions", d->repartitions()},
+                        {"last_imbalance", d->last_imbalance()}, {"rank0_halo_bytes", d->halo.halo_bytes()},
+                        {"rank0_migrated_particles", d->migrated()}};
+#endif
   s["precision"] = sizeof(Real) == 8 ? "double" : "single";
   s["version"] = CDMPM_VERSION;
   std::ofstream((out / "summary.json").string()) << s.dump(2) << '\n';

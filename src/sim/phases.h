@@ -3,8 +3,9 @@
 //
 //   bin               sort particles by grid block, activate the blocks they touch   grid/particle_bins.h
 //   p2g               mass, momentum and stress impulse to the grid                    transfer/p2g.h
+//                     [distributed: halo sum, other ranks' patches added in colour order, parallel/halo_exchange.h]
 //   boundary_fold     ghost-node contributions to their mirror nodes                  boundary/*.cpp
-//                     [distributed: halo exchange, ghost blocks summed into owners]
+//                     [distributed: on the owner of both nodes, the partition never cuts a pair]
 //   grid_update       v = mv / m + dt g, then the boundary conditions                 grid/grid_update.h
 //   boundary_unfold   mirror velocities back to the ghost nodes                       boundary/*.cpp
 //                     [distributed: halo exchange, owned velocities copied to ghosts]
@@ -13,7 +14,7 @@
 //   rigid_projection  rigid particles onto their bodies' rigid motion                 sim/rigid_bodies.h
 //   advect            x += dt v (rigid bodies move rigidly), kept inside the walls    sim/advect.h
 //   sinks             particles inside a sink removed                                 sim/sinks.h
-//                     [distributed: particle migration to the ranks owning their blocks]
+//                     [distributed: then particle migration to the ranks owning their blocks, parallel/migration.h]
 //   reductions        largest speed and wave speed for the next time step            sim/simulation.cpp
 #pragma once
 

@@ -12,6 +12,9 @@
 #include "material/constitutive_update.h"
 #include "material/stress.h"
 #include "parallel/reduction.h"
+#ifdef CDMPM_MPI
+#include "parallel/distributable.h"
+#endif
 #include "sim/advect.h"
 #include "sim/seeding.h"
 #include "sim/sinks.h"
@@ -36,6 +39,9 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   seed_bodies<dim>(s, materials, boundaries, particles, &bed_);
   if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
   rigid.init(s, materials, particles, grid.dx);
+#ifdef CDMPM_MPI
+  if (mpi::active() && distributable(s).empty()) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
+#endif
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
@@ -72,7 +78,33 @@ void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_refer
   time_ = t;
   steps_ = step_count;
   wave_dt_at_start = wave_dt_reference;
+#ifdef CDMPM_MPI
+  // The loaded particles (every rank read the whole checkpoint) are the one-process array: partitioned again, each
+  // rank keeping its own, their keys their order.
+  if (domain_) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
+#endif
   update_speeds();
+}
+
+template <int dim>
+void Simulation<dim>::with_whole_state(const std::function<void()>& f) {
+#ifdef CDMPM_MPI
+  if (domain_) {
+    Particles<dim> whole = domain_->gather(particles);
+    if (mpi::rank() != 0) return;
+    std::swap(particles, whole);
+    const mpi::LocalScope local;
+    try {
+      f();
+    } catch (...) {
+      std::swap(particles, whole);
+      throw;
+    }
+    std::swap(particles, whole);
+    return;
+  }
+#endif
+  f();
 }
 
 template <int dim>
@@ -102,6 +134,9 @@ void Simulation<dim>::advance(Real dt) {
       bed_.take_velocity(grid);
       grid.clear();
     }
+#ifdef CDMPM_MPI
+    if (domain_) return domain_->halo.p2g(particles, materials, bins_, grid, dt, domain_->partition());
+#endif
     p2g(particles, materials, bins_, grid, dt);
     if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);
   });
@@ -112,7 +147,12 @@ void Simulation<dim>::advance(Real dt) {
   timer_.run(Phase::ConstitutiveUpdate, [&] { constitutive_update(particles, materials, dt); });
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] { advect_phase(dt); });
-  timer_.run(Phase::Sinks, [&] { remove_sunk_particles(particles, sinks); });
+  timer_.run(Phase::Sinks, [&] {
+    remove_sunk_particles(particles, sinks);
+#ifdef CDMPM_MPI
+    if (domain_) domain_->migrate_particles(particles, grid);
+#endif
+  });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
 }
@@ -121,6 +161,13 @@ void Simulation<dim>::advance(Real dt) {
 // the current order, and the grid blocks they touch.
 template <int dim>
 void Simulation<dim>::bin() {
+#ifdef CDMPM_MPI
+  if (domain_) {  // the grid is activated in p2g, after the halo exchange (parallel/halo_exchange.h)
+    if (steps_ % reorder_interval == 0) domain_->sort(particles, grid, bins_);
+    else bins_.build(particles, grid);
+    return;
+  }
+#endif
   if (steps_ % reorder_interval == 0) {
     bins_.build(particles, grid);
     particles.permute(std::move(bins_.order));  // the bins are rebuilt next
@@ -157,6 +204,9 @@ void Simulation<dim>::grid_update_phase(Real dt) {
 template <int dim>
 void Simulation<dim>::boundary_unfold() {
   for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(grid);
+#ifdef CDMPM_MPI
+  if (domain_) domain_->halo.share_velocities(grid);
+#endif
 }
 
 template <int dim>
@@ -211,6 +261,7 @@ std::optional<std::string> Simulation<dim>::check_state() const {
   }
   // A distributed run combines the failure flag (global::max) and reports the first failing particle's rank.
   if (global::max(bad < n ? 1.0 : 0.0) == 0.0) return std::nullopt;
+  if (bad == n) return std::string("a particle on another rank went bad (that rank reports which)");
   std::ostringstream os;
   const auto& x = particles.x[bad];
   const auto& v = particles.v[bad];

@@ -17,6 +17,7 @@
 // materials as given, so damage can only come from the loads of the settled state.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +32,9 @@
 #include "sim/bed_layer.h"
 #include "sim/phases.h"
 #include "sim/rigid_bodies.h"
+#ifdef CDMPM_MPI
+#include "parallel/domain.h"
+#endif
 
 namespace cdmpm {
 
@@ -55,6 +59,15 @@ class Simulation {
   double time() const { return time_; }
   long long steps() const { return steps_; }
   const PhaseTimer& phase_timer() const { return timer_; }
+  // Calls f with the whole state in the one-process particle order: directly in one process; in a distributed run
+  // (MPI build under mpirun, docs/architecture.md) on rank 0 only, after gathering every rank's particles there in
+  // that order, with the reductions local (parallel/reduction.h). The outputs are written inside it, so they are
+  // those of one process. Collective in a distributed run.
+  void with_whole_state(const std::function<void()>& f);
+#ifdef CDMPM_MPI
+  // This rank's part of a distributed run (null in one process or for a scene run undistributed).
+  const Domain<dim>* domain() const { return domain_.get(); }
+#endif
 
   const Scene& scene;
   Particles<dim> particles;
@@ -90,6 +103,9 @@ class Simulation {
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   PhaseTimer timer_;
+#ifdef CDMPM_MPI
+  std::unique_ptr<Domain<dim>> domain_;
+#endif
 };
 
 }  // namespace cdmpm

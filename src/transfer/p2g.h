@@ -25,36 +25,60 @@
 
 namespace cdmpm {
 
+// Scatters the particles of bin j into acc (zero on entry): the patch contribution of one block.
 template <int dim>
-void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
-         Real dt) {
+void scatter_bin(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins,
+                 const Grid<dim>& g, uint32_t j, Real dt, PatchAccumulator<dim>& acc) {
   const Real Dinv = Real(4) * g.inv_dx * g.inv_dx;
-  for (const auto& colour : bins.colour_bins) {
+  const BlockPatch<dim> patch(g, bins.blocks[j]);
+  for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
+    const uint32_t q = bins.order[k];
+    const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
+    const Real m = p.mass[q];
+    Mat<dim> affine = m * p.C[q];
+    if (dt != 0) {
+      const Material& mat = materials[p.material[q]];
+      affine -= (dt * reference_volume(mat, m) * Dinv) * kirchhoff_stress(mat, p, q);
+    }
+    // Affine term in units of dx: (x_i - x_p) = dx (o - fx), so node i's share is
+    // w_i (m v - A fx + A o) with A = affine * dx.
+    affine *= g.dx;
+    scatter_to_patch<dim>(acc, s, patch.base_index(s), m, m * p.v[q] - affine * s.fx, affine);
+  }
+}
+
+// Adds a block's patch contribution to the active grid nodes it covers.
+template <int dim>
+void add_patch(Grid<dim>& g, uint32_t block, const PatchRecords<dim>& node) {
+  const BlockPatch<dim> patch(g, block);
+  patch.for_each_node([&](int n, size_t k) {
+    g.mass[k] += node[n][0];
+    g.momentum[k] += node[n].template segment<dim>(1);
+  });
+}
+
+// The scatter, colour by colour; after_colour(c) runs after the blocks of colour c (a distributed run adds there
+// the contributions of colour c that other ranks computed, parallel/halo_exchange.h).
+template <int dim, class AfterColour>
+void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
+         Real dt, AfterColour&& after_colour) {
+  for (size_t c = 0; c < bins.colour_bins.size(); ++c) {
+    const auto& colour = bins.colour_bins[c];
 #pragma omp parallel for schedule(dynamic, 4)
     for (size_t ci = 0; ci < colour.size(); ++ci) {
       const uint32_t j = colour[ci];
-      const BlockPatch<dim> patch(g, bins.blocks[j]);
       PatchAccumulator<dim> acc;
-      for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
-        const uint32_t q = bins.order[k];
-        const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
-        const Real m = p.mass[q];
-        Mat<dim> affine = m * p.C[q];
-        if (dt != 0) {
-          const Material& mat = materials[p.material[q]];
-          affine -= (dt * reference_volume(mat, m) * Dinv) * kirchhoff_stress(mat, p, q);
-        }
-        // Affine term in units of dx: (x_i - x_p) = dx (o - fx), so node i's share is
-        // w_i (m v - A fx + A o) with A = affine * dx.
-        affine *= g.dx;
-        scatter_to_patch<dim>(acc, s, patch.base_index(s), m, m * p.v[q] - affine * s.fx, affine);
-      }
-      patch.for_each_node([&](int n, size_t k) {
-        g.mass[k] += acc.mass(n);
-        g.momentum[k] += acc.momentum(n);
-      });
+      scatter_bin(p, materials, bins, g, j, dt, acc);
+      add_patch(g, bins.blocks[j], acc.node);
     }
+    after_colour(static_cast<int>(c));
   }
+}
+
+template <int dim>
+void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
+         Real dt) {
+  p2g(p, materials, bins, g, dt, [](int) {});
 }
 
 }  // namespace cdmpm

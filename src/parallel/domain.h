@@ -1,0 +1,105 @@
+// domain.h - the state of a distributed run on one rank (MPI build; docs/architecture.md): the partition of the
+// block order (parallel/partition.h), the order keys of this rank's particles (parallel/migration.h), the halo
+// exchanges (parallel/halo_exchange.h), and the dynamic load balancing: at each particle sort (every
+// Simulation::reorder_interval steps) the particle imbalance max / mean over the ranks is measured and, above
+// rebalance_threshold (mpirun option of `cdmpm run`: --rebalance, default 1.1), the blocks are partitioned again for
+// the current counts and the particles migrate. None of this changes a result: a run gives the same bits on any
+// number of ranks and with any threshold.
+#pragma once
+
+#include <cstdio>
+#include <vector>
+
+#include "core/particles.h"
+#include "grid/grid.h"
+#include "grid/particle_bins.h"
+#include "parallel/communicator.h"
+#include "parallel/halo_exchange.h"
+#include "parallel/migration.h"
+#include "parallel/partition.h"
+
+namespace cdmpm {
+
+// Above this max / mean particle imbalance a sort step partitions the blocks again (set by `cdmpm run --rebalance`).
+inline double rebalance_threshold = 1.1;
+
+template <int dim>
+class Domain {
+ public:
+  // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
+  // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
+  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size) : allowed_(allowed_cuts(g, domain_size)) {
+    std::vector<uint32_t> blocks;
+    std::vector<uint64_t> counts;
+    count_blocks(p, g, blocks, counts);
+    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count(), allowed_);
+    keys_.resize(p.size());
+    std::iota(keys_.begin(), keys_.end(), uint64_t(0));
+    std::vector<uint32_t> kept;
+    for (size_t q = 0; q < p.size(); ++q)
+      if (part_.owner(particle_block(p, q, g)) == mpi::rank()) kept.push_back(static_cast<uint32_t>(q));
+    if (kept.size() != p.size()) {
+      p.permute(kept);
+      for (size_t k = 0; k < kept.size(); ++k) keys_[k] = keys_[kept[k]];
+      keys_.resize(kept.size());
+    }
+  }
+
+  // The sort of a reorder step (as one process: stable by block, solids first), the new keys, and a new partition
+  // if the imbalance passed the threshold. Leaves bins built for the current particles.
+  void sort(Particles<dim>& p, const Grid<dim>& g, ParticleBins& bins) {
+    bins.build(p, g);
+    p.permute(std::move(bins.order));
+    rekey_after_sort(p, keys_);
+    bins.build(p, g);
+    std::vector<uint64_t> counts(bins.bin_count());
+    for (size_t j = 0; j < counts.size(); ++j) counts[j] = bins.start[j + 1] - bins.start[j];
+    // Every rank's (block, count) pairs; blocks of different ranks are distinct and ascend with the rank.
+    mpi::Bytes mine;
+    for (size_t j = 0; j < counts.size(); ++j) mpi::put(mine, bins.blocks[j]), mpi::put(mine, counts[j]);
+    std::vector<uint32_t> all_blocks;
+    std::vector<uint64_t> all_counts;
+    for (const mpi::Bytes& b : mpi::allgather(mine)) {
+      mpi::Reader read{b};
+      while (!read.done()) all_blocks.push_back(read.get<uint32_t>()), all_counts.push_back(read.get<uint64_t>());
+    }
+    last_imbalance_ = imbalance(rank_counts(part_, all_blocks, all_counts));
+    if (mpi::size() == 1 || last_imbalance_ <= rebalance_threshold) return;
+    const BlockPartition next = balanced_partition(all_blocks, all_counts, mpi::size(), g.block_count(), allowed_);
+    if (next.first == part_.first) return;
+    part_ = next;
+    ++repartitions_;
+    migrated_ += migrate(p, keys_, g, part_);
+    bins.build(p, g);
+  }
+
+  // After advection: particles to the ranks owning their blocks.
+  void migrate_particles(Particles<dim>& p, const Grid<dim>& g) { migrated_ += migrate(p, keys_, g, part_); }
+
+  Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
+
+  HaloExchange<dim> halo;
+  const BlockPartition& partition() const { return part_; }
+  double last_imbalance() const { return last_imbalance_; }
+  long long repartitions() const { return repartitions_; }
+  double migrated() const { return migrated_; }
+
+ private:
+  static void count_blocks(const Particles<dim>& p, const Grid<dim>& g, std::vector<uint32_t>& blocks,
+                           std::vector<uint64_t>& counts) {
+    ParticleBins bins;
+    bins.build(p, g);
+    blocks = bins.blocks;
+    counts.resize(bins.bin_count());
+    for (size_t j = 0; j < counts.size(); ++j) counts[j] = bins.start[j + 1] - bins.start[j];
+  }
+
+  std::vector<uint8_t> allowed_;
+  BlockPartition part_;
+  std::vector<uint64_t> keys_;
+  double last_imbalance_ = 1;
+  long long repartitions_ = 0;
+  double migrated_ = 0;
+};
+
+}  // namespace cdmpm
