@@ -31,6 +31,7 @@ CASES=(
   "ice_bar_2d|time.frame_interval=0.005|the full run (end 0.02 s, 800 steps of 6.4k particles): the bar pulled until it breaks"
   "lake_at_rest_2d|parameters.dx=20 time.end=5 time.frame_interval=2.5|water at rest over the Eqip profile with the well-balanced bed layer (sim/bed_layer.h); ~200 steps of 5.1k particles (full run 60 s at dx = 10 m)"
   "lake_at_rest_3d|time.end=1 time.frame_interval=0.5|the same over the extruded channel (scenes/data/eqip_sermia_channel.asc); ~20 steps (full run 60 s)"
+  "ice_shear_2d|time.frame_interval=0.0005|the full run (end 0.002 s, 80 steps of 25.6k particles): the block sheared until it breaks, 64 crack starts, all shear (crack_starts.csv)"
   "lab_bf_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|the block starts to move; ~440 steps of 40k particles (frames are off in the scene: turned on)"
   "lab_cs_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|as lab_bf_2d (40k particles)"
   "lab_gf_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|as lab_bf_2d (41k particles)"

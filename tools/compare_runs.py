@@ -33,11 +33,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtu import read_pvd, read_vtu  # noqa: E402
 
 TEXT_FILES = ("probes.csv", "icebergs.csv", "waves.csv")
-# The hazard products (docs/scenes.md#hazard) and the realised crevasses (docs/scenes.md#crevasses): compared byte
-# for byte when both runs wrote them; a file only one run wrote (a build from before them) is listed, not counted
+# The hazard products (docs/scenes.md#hazard), the realised crevasses (docs/scenes.md#crevasses) and the crack-start
+# record (docs/ice.md): compared byte for byte when both runs wrote them; a file only one run wrote (a build from before them) is listed, not counted
 # as a difference.
 HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
-                "inundation_depth.asc", "crevasses.csv")
+                "inundation_depth.asc", "crevasses.csv", "crack_starts.csv")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
                 "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file", "phase_seconds",

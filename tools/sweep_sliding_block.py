@@ -5,7 +5,18 @@ paper (issue 3):
     linear (reference paper):  L/H = 2 sigma_t / (3 rho_i g H (1 - D/H))
     cantilever, full buoyancy:  L/H = sqrt(sigma_t / (3 g (rho_i H - rho_w D)))
 sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) measures that the MPM
-ice reaches it in uniaxial tension (peak within 5 %).
+ice reaches it in uniaxial tension (peak within 5 %). The linear model is the shear model of the overhang: its
+largest shear stress 3 V / (2 H) set equal to a strength; with the ice's own pure-shear strength tau_s
+(src/material/cohesive_cam_clay.h shear_strength, measured by tests/unit/test_crack_starts.cpp SimpleShear.*):
+    shear model:                L/H = 2 tau_s / (3 rho_i g H (1 - D/H))      (column model_shear)
+Each run's recorded crack start (summary.json first_iceberg.crack_start, docs/ice.md) gives the columns
+crack_mode (tension / shear), crack_time, crack_x_over_H (from the bed edge, positive beyond it) and
+crack_z_over_H (above the bed), and band_tension / band_shear count the events of each mode on the band that
+separates the iceberg (summary.json first_iceberg.band_events). DIR/sliding_block_sweep.json holds the models'
+inputs.
+
+One plot of several sweeps (e.g. the tension set and the shear set) with both models of each:
+    /usr/bin/python3 tools/sweep_sliding_block.py --plot-sets DIR1 DIR2 [--labels A B] --out PNG
 
     /usr/bin/python3 tools/sweep_sliding_block.py [--cells-per-H 16] [--ratios 0 0.2 ...] [--out DIR] [--jobs 2]
                                                   [--crack-frames DT] [--set PATH=VALUE ...]
@@ -90,17 +101,67 @@ def glacier_shortening(run_dir):
     return float(rows[0]["length"]) - float(rows[-1]["length"])
 
 
-def models(scene, ratio):
-    p = scene["parameters"]
-    H = p["H"]
+def uniaxial_tension_per_p0(M, beta, dim=2):
+    """Uniaxial tensile strength per unit p0 of the yield surface (CohesiveCamClay::uniaxial_strength)."""
+    t, cq2 = -1.0 / dim, 1.5 * (dim - 1) / dim
+    A, B, C = (1 + 2 * beta) * cq2 + M * M * t * t, M * M * t * (beta - 1), -M * M * beta
+    disc = math.sqrt(B * B - 4 * A * C)
+    return -2 * C / (B + disc) if B > 0 else (-B + disc) / (2 * A)
+
+
+def model_inputs(scene):
+    """The numbers the models need, from the scene (after --set): H, densities, g, sigma_t and tau_s."""
     ice = scene["materials"]["ice"]
-    rho_i, rho_w = ice["density"], scene["materials"]["water"]["density"]
-    g = -scene.get("gravity", [0, -9.81])[1]
     sigma_t = ice["tensile_strength"]
-    linear = 2 * sigma_t / (3 * rho_i * g * H * (1 - ratio)) if ratio < 1 else math.inf
-    net = rho_i * H - rho_w * ratio * H
-    cantilever = math.sqrt(sigma_t / (3 * g * net)) if net > 0 else math.inf
-    return linear, cantilever
+    M, beta = ice["M"], ice["beta"]
+    tau_s = sigma_t * M * math.sqrt(beta / (3 * (1 + 2 * beta))) / uniaxial_tension_per_p0(M, beta)
+    return {"H": scene["parameters"]["H"], "rho_i": ice["density"], "rho_w": scene["materials"]["water"]["density"],
+            "g": -scene.get("gravity", [0, -9.81])[1], "sigma_t": sigma_t, "tau_s": tau_s, "M": M, "beta": beta}
+
+
+def model_lengths(m, ratio):
+    """(linear with sigma_t, cantilever with buoyancy, shear model with tau_s), each as L/H."""
+    H, rho_i, g = m["H"], m["rho_i"], m["g"]
+    linear = 2 * m["sigma_t"] / (3 * rho_i * g * H * (1 - ratio)) if ratio < 1 else math.inf
+    shear = 2 * m["tau_s"] / (3 * rho_i * g * H * (1 - ratio)) if ratio < 1 else math.inf
+    net = rho_i * H - m["rho_w"] * ratio * H
+    cantilever = math.sqrt(m["sigma_t"] / (3 * g * net)) if net > 0 else math.inf
+    return linear, cantilever, shear
+
+
+def models(scene, ratio):
+    return model_lengths(model_inputs(scene), ratio)[:2]
+
+
+def plot_sets(dirs, labels, png):
+    """One plot: for each sweep folder its measured L/H (filled: crack started in tension, open: in shear) and its
+    two models (cantilever with buoyancy, dashed; shear model with tau_s, solid), in the set's colour."""
+    import numpy as np
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    d = np.linspace(0, 0.95, 200)
+    for k, (folder, label) in enumerate(zip(dirs, labels)):
+        colour = f"C{k}"
+        m = json.load(open(os.path.join(folder, "sliding_block_sweep.json")))
+        rows = list(csv.DictReader(open(os.path.join(folder, "sliding_block_sweep.csv"))))
+        ax.plot(d, [model_lengths(m, x)[1] for x in d], "--", color=colour, label=f"{label}: cantilever with buoyancy")
+        ax.plot(d, [model_lengths(m, x)[2] for x in d], "-", color=colour,
+                label=f"{label}: shear model, tau_s = {m['tau_s'] / 1e6:.2f} MPa")
+        for mode, face in (("tension", colour), ("shear", "none")):
+            pts = [(float(r["D_over_H"]), float(r["L_over_H"])) for r in rows
+                   if r["status"] == "iceberg" and r.get("crack_mode") == mode]
+            if pts:
+                ax.plot(*zip(*pts), "o", color=colour, mfc=face, label=f"{label}: cdmpm, crack starts in {mode}")
+        pts = [(float(r["D_over_H"]), float(r["L_over_H"])) for r in rows if r["status"] != "iceberg"]
+        if pts:
+            ax.plot(*zip(*pts), "^", color=colour, label=f"{label}: cdmpm, no iceberg (overhang reached)")
+    ax.set_xlabel("D/H")
+    ax.set_ylabel("L/H")
+    ax.set_ylim(0, 2.5)
+    ax.legend(fontsize=7)
+    ax.set_title("sliding block: iceberg length, both sets and both models", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print(png)
 
 
 def main():
@@ -116,7 +177,12 @@ def main():
                     help="write frames every DT s and report the overhang at which the crack starts")
     ap.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
                     help="passed on to every run (repeatable), e.g. --set parameters.push_speed=1")
+    ap.add_argument("--plot-sets", nargs="+", metavar="DIR", help="plot these sweeps together (no runs) into --out PNG")
+    ap.add_argument("--labels", nargs="+", help="the sets' names for --plot-sets")
     args = ap.parse_args()
+    if args.plot_sets:
+        labels = args.labels or [os.path.basename(os.path.normpath(x)) for x in args.plot_sets]
+        return plot_sets(args.plot_sets, labels, args.out)
     scene = json.load(open(SCENE))
     apply_sets(scene, args.set)
     H = scene["parameters"]["H"]
@@ -145,7 +211,7 @@ def main():
         first = summary.get("first_iceberg")
         if summary["parameters"]["H"] != H:
             sys.exit(f"sweep_sliding_block.py: the run resolved H = {summary['parameters']['H']}, the models use {H}")
-        linear, cantilever = models(scene, r)
+        linear, cantilever, shear = model_lengths(model_inputs(scene), r)
         if rc == 0 and first:
             status, L_H, t = "iceberg", first["length"] / H, first["time"]
         else:
@@ -159,10 +225,19 @@ def main():
                 # output.icebergs.min_cells (debris).
                 status = "debris_no_iceberg"
             L_H, t = overhang / H, summary["sim_time"]
-        print(f"D/H = {r:g}: {status}, L/H = {L_H:.3f} (linear model {linear:.3f}, cantilever {cantilever:.3f}),"
-              f" t = {t:.1f} s, wall {summary['wall_time']:.0f} s", flush=True)
+        crack = (first or {}).get("crack_start") or {}
+        par = summary["parameters"]
+        print(f"D/H = {r:g}: {status}, L/H = {L_H:.3f} (linear model {linear:.3f}, cantilever {cantilever:.3f},"
+              f" shear model {shear:.3f}), crack starts in {crack.get('mode', '-')}, t = {t:.1f} s,"
+              f" wall {summary['wall_time']:.0f} s", flush=True)
         row = {"D_over_H": r, "L_over_H": L_H, "status": status, "time": t, "model_linear": linear,
-               "model_cantilever": cantilever, "wall_time": summary["wall_time"]}
+               "model_cantilever": cantilever, "model_shear": shear, "crack_mode": crack.get("mode", ""),
+               "crack_time": crack.get("time", math.nan),
+               "crack_x_over_H": (crack["x"] - par["x_edge"]) / H if crack else math.nan,
+               "crack_z_over_H": (crack["y"] - par["z_bed"]) / H if crack else math.nan,
+               "band_tension": ((first or {}).get("band_events") or {}).get("tension", ""),
+               "band_shear": ((first or {}).get("band_events") or {}).get("shear", ""),
+               "wall_time": summary["wall_time"]}
         if args.crack_frames:
             row["crack_overhang_over_H"] = crack_overhang(run_dir, scene, summary["parameters"])
             print(f"D/H = {r:g}: crack starts at an overhang of {row['crack_overhang_over_H']:.3f} H", flush=True)
@@ -176,6 +251,7 @@ def main():
         # Highest D/H first: the runs near neutral buoyancy are the long ones (they go on to an overhang of 5H),
         # and starting them first keeps both jobs busy to the end.
         rows = sorted(pool.map(run, sorted(args.ratios, reverse=True)), key=lambda row: row["D_over_H"])
+    json.dump(model_inputs(scene), open(os.path.join(args.out, "sliding_block_sweep.json"), "w"), indent=1)
     path = os.path.join(args.out, "sliding_block_sweep.csv")
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -186,8 +262,9 @@ def main():
     d = np.linspace(0, 0.99, 200)
     lin = [models(scene, x)[0] for x in d]
     can = [models(scene, x)[1] for x in d]
-    ax.plot(d, lin, "k-", label="bending model 2σt/[3ρi g H(1-D/H)]")
+    ax.plot(d, lin, "k-", label="linear model 2σt/[3ρi g H(1-D/H)]")
     ax.plot(d, can, "k--", label="cantilever with buoyancy")
+    ax.plot(d, [model_lengths(model_inputs(scene), x)[2] for x in d], "k:", label="shear model 2τs/[3ρi g H(1-D/H)]")
     for status, marker, label in (("iceberg", "o", ""), ("no_failure", "^", " (no failure: overhang reached)"),
                                   ("debris_no_iceberg", "x", " (broke into debris: overhang reached)")):
         pts = [(row["D_over_H"], row["L_over_H"]) for row in rows if row["status"] == status]

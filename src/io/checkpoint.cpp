@@ -10,7 +10,7 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '8'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '9'};
 constexpr uint64_t kMaxString = 4096;  // longest string field (frame file names, fingerprint section names)
 
 // Writes and keeps the CRC-32 of everything written.
@@ -99,6 +99,7 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
     w.pod(m.probes_csv_bytes);
     w.pod(m.icebergs_csv_bytes);
     w.vec(m.first_iceberg);
+    w.vec(m.crack_starts);
     w.vec(m.rigid_bodies);
     w.vec(m.hazard);
     p.for_each_array([&](auto& a) { w.vec(a); });
@@ -133,6 +134,7 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   r.pod(m.probes_csv_bytes);
   r.pod(m.icebergs_csv_bytes);
   r.vec(m.first_iceberg, "first iceberg");
+  r.vec(m.crack_starts, "crack starts");
   r.vec(m.rigid_bodies, "rigid bodies");
   r.vec(m.hazard, "hazard record");
   auto read_arrays_of = [&](uint64_t count) {

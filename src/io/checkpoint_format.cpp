@@ -42,8 +42,15 @@ std::string bad_meta(const CheckpointMeta& m, const Scene& scene) {
   if (has_inf(m.probe_state) || !finite_all(m.rigid_bodies) || has_inf(m.first_iceberg) ||
       !std::all_of(m.first_iceberg.begin(), measured_end, [](double x) { return std::isfinite(x); }))
     return "non-finite probe, iceberg or rigid-body value";
-  if (m.probe_state.size() > 64 * (scene.probes.size() + 1) || (nb != 0 && nb != base && nb != base + 2))
+  // Since the crack-start record, the first iceberg's record ends with its crack start (time, x[dim], mode,
+  // p, q, sigma_1, particle id; NaN if none was found) and the band's event counts by mode, and the record itself holds at most 64 events of
+  // 7 + dim finite numbers (probe/crack_starts.h).
+  const size_t crack = 8 + static_cast<size_t>(scene.dim), event = 7 + static_cast<size_t>(scene.dim);
+  if (m.probe_state.size() > 64 * (scene.probes.size() + 1) ||
+      (nb != 0 && nb != base && nb != base + 2 && nb != base + 2 + crack) || m.crack_starts.size() % event != 0 ||
+      m.crack_starts.size() > 64 * event)
     return "bad record length";
+  if (!finite_all(m.crack_starts)) return "non-finite crack-start value";
   return "";
 }
 

@@ -125,6 +125,18 @@ struct CohesiveCamClay {
     return B > 0 ? (Real(-2) * C) / (B + disc) : (-B + disc) / (Real(2) * A);
   }
 
+  // Pure-shear strength tau_s > 0 of the yield surface: the shear stress tau of tau_xy = tau_yx = tau (all else 0),
+  // for which p = 0 and |dev tau| = sqrt(2) tau, so q = sqrt(3) tau in 2D (the in-plane convention above) and
+  // in 3D alike. y(0, q) = 0 gives (1 + 2 beta) q^2 = M^2 beta p0^2:
+  //   tau_s = M p0 sqrt(beta / (3 (1 + 2 beta))).
+  // Against the uniaxial tensile strength sigma_t = uniaxial_strength<dim>(p0, true): in the von Mises limit
+  // (M small, so that the strengths, of order M p0, leave |p| << beta p0 and << p0, where the ellipse is the line
+  // q = M p0 sqrt(beta / (1 + 2 beta))), q is the same in shear and in tension, sigma_t = q / sqrt(3/2 (d - 1)/d),
+  // so tau_s / sigma_t -> 1/sqrt(3) in 3D and 1/2 in 2D (q = sqrt(3)/2 sigma in uniaxial 2D). Away from that
+  // limit the ellipse narrows towards its tensile tip, sigma_t falls faster than tau_s and the ratio rises
+  // (docs/ice.md, the failure-mode study: with the compressive strength at least 1.6 sigma_t, >= 0.63 in 2D).
+  Real shear_strength(Real p0) const { return M * p0 * std::sqrt(beta / (Real(3) * (Real(1) + Real(2) * beta))); }
+
   // True if F is certainly an elastic trial state that the return mapping leaves untouched (see the header):
   // not inverted, smallest singular value certainly above the clamp, and y(p, q) <= 0. Without a root:
   // with q^2 = 3/2 mu^2 J^(-4/d) |dev b|^2, y <= 0 reads X J^(-4/d) <= R for X = (1 + 2 beta) 3/2 mu^2 |dev b|^2

@@ -1,6 +1,6 @@
 // reduction.h - the one interface through which every global quantity is combined across processes: the
 // largest speed and wave speed (time step), the stability check, probe values, energies and mass, and the
-// rigid-body sums, the hazard record's per-column extremes. Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
+// rigid-body sums, the hazard record's per-column extremes, the crack-start record's events of a step (concatenate). Each caller first reduces over its own particles (OpenMP, in a fixed order where the result
 // must not depend on the thread count), then passes its partial result here.
 //
 // One process (the default build): every function is the identity. The MPI build (-DCDMPM_MPI=ON,
@@ -32,6 +32,8 @@ template <class T>
 void max(std::vector<T>&) {}
 template <class T>
 void min(std::vector<T>&) {}
+template <class T>
+void concatenate(std::vector<T>&) {}
 #else
 namespace detail {
 // The scalar of T (T itself, or the Scalar of a fixed-size Eigen type) and how many T holds.
@@ -64,6 +66,23 @@ void max(std::vector<T>& v) {
 template <class T>
 void min(std::vector<T>& v) {
   detail::apply(v, [](auto* p, size_t n) { mpi::min(p, n); });
+}
+// Every rank's items, concatenated in rank order, on every rank (plain records copied as bytes: numbers, enums
+// and fixed-size Eigen vectors).
+template <class T>
+void concatenate(std::vector<T>& v) {
+  static_assert(std::is_standard_layout_v<T>, "concatenate plain records");
+  if (!mpi::active() || mpi::size() == 1) return;
+  mpi::Bytes mine;
+  mpi::put(mine, v.data(), v.size());
+  v.clear();
+  for (const mpi::Bytes& b : mpi::allgather(mine)) {
+    mpi::Reader r{b};
+    const size_t n = b.size() / sizeof(T);
+    const size_t at = v.size();
+    v.resize(at + n);
+    r.get(v.data() + at, n);
+  }
 }
 #endif
 

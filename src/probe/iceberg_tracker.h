@@ -10,18 +10,33 @@
 // The first iceberg's failure geometry (probe/failure_plane.h: the width of its top and the dip of the surface it
 // broke off along, on the side facing the glacier) is measured at that same detection and goes into summary.json
 // with it.
+// The first iceberg's crack start (probe/crack_starts.h) is the earliest event of the simulation's crack-start
+// record that lies on the band separating the new iceberg from the glacier. Where its particle is at the
+// detection, take its row: the intact particles of the glacier (body 0) and of the iceberg (body 1) within
+// w = band_cells dx = 2 dx of it across the flow (vertically; and laterally in 3D). Along the flow, oriented from
+// the glacier to the iceberg, the event lies on the band if it is between the glacier's front and the iceberg's
+// rear in that row, to w: front_0 - w <= u <= rear_1 + w. A row without glacier or iceberg particles has no band.
+// The band may have opened wide by the detection (the berg tilts away), which a distance to both bodies would
+// miss; damage under the iceberg (beyond its rear by more than w) or in the glacier behind its front is not on it.
+// None found: the crack start is null.
+// With it, the number of the band's events in each mode (band_events): the earliest event may be damage that
+// predates the crack and that the crack ran into (e.g. ice crushed at a support), so the counts say how the
+// band as a whole broke.
 // icebergs.csv columns: frame, time, id, particles, volume, length, height, centroid_x, centroid_y
 // (, centroid_z). Volumes are areas [m^2] in 2D.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <vector>
 
 #include "material/stress.h"
+#include "probe/crack_starts.h"
 #include "probe/failure_plane.h"
 #include "probe/icebergs.h"
 #include "sim/simulation.h"
@@ -79,6 +94,8 @@ class IcebergTracker {
                                                     bodies[0].centroid[axis] < b.centroid[axis] ? -1 : 1);
     first_.push_back(f.width);
     first_.push_back(f.angle);
+    bodies_sign_ = bodies[0].centroid[axis] < b.centroid[axis] ? Real(1) : Real(-1);
+    append_crack_start(label);
     write_rows(csv, frame, bodies);
     return true;
   }
@@ -102,9 +119,10 @@ class IcebergTracker {
     csv.flush();
   }
 
-  // (time, length, height, volume, particles, centroid..., failure width, failure angle) of the first iceberg;
-  // empty if none yet. Saved in checkpoints so a resumed run reports it (a checkpoint written before the failure
-  // geometry was measured ends after the centroid).
+  // (time, length, height, volume, particles, centroid..., failure width, failure angle, crack start: time,
+  // x..., mode, p, q, sigma_1, particle id, band events in tension, in shear) of the first iceberg; empty if none yet. Saved in checkpoints so a
+  // resumed run reports it (a checkpoint written before the failure geometry was measured ends after the
+  // centroid, one written before the crack start was recorded after the failure angle).
   std::vector<double> first_;
 
   nlohmann::json summary() const {
@@ -117,11 +135,96 @@ class IcebergTracker {
       j["failure_width"] = number_or_null(first_[5 + dim]);
       j["failure_angle"] = number_or_null(first_[6 + dim]);
     }
+    if (first_.size() >= size_t(7 + dim + crack_start_size)) {
+      const double* c = first_.data() + 7 + dim;  // time, x[dim], mode, p, q, sigma_1, particle id, counts
+      j["band_events"] = {{"tension", static_cast<long long>(c[6 + dim])}, {"shear", static_cast<long long>(c[7 + dim])}};
+      if (!std::isfinite(c[0])) {
+        j["crack_start"] = nullptr;
+      } else {
+        nlohmann::json cs = {{"time", c[0]}};
+        for (int a = 0; a < dim; ++a) cs[std::string(1, "xyz"[a])] = c[1 + a];
+        cs["mode"] = crack_mode_name(static_cast<CrackMode>(static_cast<int>(c[1 + dim])));
+        cs["p"] = c[2 + dim];
+        cs["q"] = c[3 + dim];
+        cs["sigma_1"] = c[4 + dim];
+        cs["particle"] = static_cast<unsigned long long>(c[5 + dim]);
+        j["crack_start"] = cs;
+      }
+    }
     return j;
   }
 
+  static constexpr int band_cells = 2;
+  static constexpr size_t crack_start_size = 8 + dim;
+
+  // Index in sim.crack_starts.events() of the first iceberg's crack start (see the header), -1 if none, and
+  // the number of band events in each mode (tension, shear); `label` is the detection's body of each particle.
+  long find_crack_start(const std::vector<int>& label, std::array<long, 2>& counts) const {
+    counts = {0, 0};
+    const auto& events = sim_.crack_starts.events();
+    const auto& P = sim_.particles;
+    const size_t ne = events.size(), n = P.size();
+    if (ne == 0) return -1;
+    std::vector<Vec<dim>> at(ne);
+    std::vector<uint8_t> present(ne, 0);
+    for (size_t q = 0; q < n; ++q)  // where the event particles are now (a sink may have removed one)
+      for (size_t k = 0; k < ne; ++k)
+        if (P.id[q] == events[k].id) at[k] = P.x[q], present[k] = 1;
+    // Per event particle, over the particles of its row (within w of it across the flow: vertically, and
+    // laterally in 3D): the glacier's front and the iceberg's rear along the flow, u = the flow coordinate
+    // oriented from the glacier to the iceberg. Exact maxima / minima, any order.
+    const int axis = sim_.scene.output.flow_axis;
+    const Real sgn = bodies_sign_;
+    const Real w = band_cells * sim_.grid.dx;
+    constexpr Real inf = std::numeric_limits<Real>::infinity();
+    std::vector<Real> front(ne, -inf), rear(ne, inf);
+#pragma omp parallel
+    {
+      std::vector<Real> f(ne, -inf), r(ne, inf);
+#pragma omp for schedule(static) nowait
+      for (size_t q = 0; q < n; ++q) {
+        if (label[q] != 0 && label[q] != 1) continue;
+        const Real u = sgn * P.x[q][axis];
+        for (size_t k = 0; k < ne; ++k) {
+          bool row = present[k];
+          for (int a = 0; a < dim && row; ++a)
+            if (a != axis && std::abs(P.x[q][a] - at[k][a]) > w) row = false;
+          if (!row) continue;
+          if (label[q] == 0) f[k] = std::max(f[k], u);
+          else r[k] = std::min(r[k], u);
+        }
+      }
+#pragma omp critical(cdmpm_crack_band)
+      for (size_t k = 0; k < ne; ++k) front[k] = std::max(front[k], f[k]), rear[k] = std::min(rear[k], r[k]);
+    }
+    long first = -1;
+    for (size_t k = 0; k < ne; ++k) {  // events are in time order
+      const Real u = sgn * at[k][axis];
+      if (present[k] && front[k] > -inf && rear[k] < inf && front[k] - w <= u && u <= rear[k] + w) {
+        if (first < 0) first = static_cast<long>(k);
+        ++counts[static_cast<int>(events[k].mode)];
+      }
+    }
+    return first;
+  }
+
  private:
+  void append_crack_start(const std::vector<int>& label) {
+    std::array<long, 2> counts{};
+    const long k = find_crack_start(label, counts);
+    if (k < 0) {
+      first_.insert(first_.end(), crack_start_size - 2, std::nan(""));
+    } else {
+      const CrackStart<dim>& e = sim_.crack_starts.events()[static_cast<size_t>(k)];
+      first_.push_back(e.time);
+      for (int a = 0; a < dim; ++a) first_.push_back(e.x[a]);
+      first_.insert(first_.end(), {double(static_cast<int>(e.mode)), e.p, e.q, e.sigma_1, double(e.id)});
+    }
+    first_.insert(first_.end(), {double(counts[0]), double(counts[1])});
+  }
+
   const Simulation<dim>& sim_;
+  Real bodies_sign_ = 1;  // +1 if the first iceberg lies downstream of the glacier along flow_axis
   bool active_ = false;
   size_t min_particles_ = 0;
   Real spacing_ = 0;

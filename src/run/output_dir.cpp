@@ -11,11 +11,11 @@ namespace cdmpm {
 namespace fs = std::filesystem;
 
 bool is_run_output_file(const std::string& name) {
-  static constexpr std::array<std::string_view, 18> kFixed = {
+  static constexpr std::array<std::string_view, 19> kFixed = {
       "particles.pvd", "probes.csv", "icebergs.csv",   "waves.csv",         "linear_waves.csv",
       "cauchy_poisson.csv", "summary.json", "checkpoint.bin", "checkpoint.bin.tmp", "run.json", "scene.resolved.json",
       "hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
-      "inundation_depth.asc", "crevasses.csv"};
+      "inundation_depth.asc", "crevasses.csv", "crack_starts.csv"};
   if (std::find(kFixed.begin(), kFixed.end(), name) != kFixed.end()) return true;
   const std::string_view prefix = "particles_", suffix = ".vtu";
   return name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) && name.ends_with(suffix);

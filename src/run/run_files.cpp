@@ -98,6 +98,8 @@ void RunFiles<dim>::resume() {
   if (!hazard_.load_state(meta.hazard))
     throw std::runtime_error(ckpt + ": checkpoint holds a hazard record that does not fit the scene's columns");
   icebergs_.first_ = meta.first_iceberg;
+  if (!sim_.crack_starts.load(meta.crack_starts))
+    throw std::runtime_error(ckpt + ": checkpoint holds a crack-start record of another dimension");
   restore_output_size(path("probes.csv"), meta.probes_csv_bytes);
   if (icebergs_.active()) restore_output_size(path("icebergs.csv"), meta.icebergs_csv_bytes);
   open_tables(true);
@@ -132,10 +134,20 @@ void RunFiles<dim>::checkpoint() {
   meta.probes_csv_bytes = static_cast<uint64_t>(fs::file_size(path("probes.csv")));
   meta.icebergs_csv_bytes = icebergs_.active() ? static_cast<uint64_t>(fs::file_size(path("icebergs.csv"))) : 0;
   meta.first_iceberg = icebergs_.first_;
+  meta.crack_starts = sim_.crack_starts.save();
+  write_crack_starts();
   meta.rigid_bodies = sim_.rigid.save();
   meta.probe_state = probes_.save_state();
   meta.hazard = hazard_.save_state();
   write_checkpoint(path("checkpoint.bin").string(), sim_.particles, meta);
+}
+
+template <int dim>
+void RunFiles<dim>::write_crack_starts() const {
+  if (!sim_.crack_starts.active()) return;
+  std::ofstream os(path("crack_starts.csv"));
+  sim_.crack_starts.write_csv(os);
+  if (!os) throw std::runtime_error(path("crack_starts.csv").string() + ": cannot write");
 }
 
 template class RunFiles<2>;

@@ -7,7 +7,9 @@
 //   run.json                provenance: the scene file (absolute path), the --set values, the command line, the
 //                           version and git commit; `cdmpm run --resume DIR` reads the scene and --set values here,
 //   scene.resolved.json     the scene as loaded: --set values applied, parameters and expressions evaluated,
-//   crevasses.csv           scenes with crevassed ice bodies: the realised crevasses (shape/crevasse_field.h).
+//   crevasses.csv           scenes with crevassed ice bodies: the realised crevasses (shape/crevasse_field.h),
+//   crack_starts.csv        scenes with breakable ice: the crack-start record (probe/crack_starts.h), rewritten
+//                           whole at every checkpoint and at the end (the record itself is in the checkpoint).
 // A fresh run creates the folder and the files; a resumed run reads the checkpoint into the simulation, the
 // probes and the iceberg tracker, and appends to the files.
 #pragma once
@@ -40,8 +42,11 @@ class RunFiles {
   // Detection at a probe sample (the first iceberg); true if it was found just now.
   bool sample_icebergs() { return icebergs_.sample(bergs_, meta.frame_index); }
   void checkpoint();
-  // Closes probes.csv (summary.json's wave report reads it).
-  void close() { csv_.close(); }
+  // Closes probes.csv (summary.json's wave report reads it) and writes crack_starts.csv.
+  void close() {
+    csv_.close();
+    write_crack_starts();
+  }
   std::filesystem::path path(const std::string& name) const { return out_ / name; }
 
   CheckpointMeta meta;  // frame and probe indices, frames written, ... (what a checkpoint records)
@@ -50,6 +55,7 @@ class RunFiles {
   void open_tables(bool append);
   void write_provenance(const std::vector<std::string>& command_line) const;
   void write_crevasses() const;
+  void write_crack_starts() const;
   std::filesystem::path out_;
   Simulation<dim>& sim_;
   Probes<dim>& probes_;

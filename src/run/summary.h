@@ -1,7 +1,7 @@
 // summary.h - summary.json, written at the end of every run (completed, unstable or stopped): the scene and
 // its resolved parameters, particles, steps, simulated and wall time, particle-steps per second (overall and
 // while stepping), the wall time of each phase of the step (phase_seconds, sim/phases.h), peak memory and
-// bytes per particle, mass change, energies at the start and the end, the first iceberg, the wave report of
+// bytes per particle, mass change, energies at the start and the end, the first iceberg (with its crack start, probe/iceberg_tracker.h), the wave report of
 // the gauges (probe/wave_report.h), the hazard entry (hazard/hazard_report.h), the georeference, status and reason, threads, precision, version, git commit, the --set values
 // and the command line.
 #pragma once

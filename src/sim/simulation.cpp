@@ -42,6 +42,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
 #ifdef CDMPM_MPI
   if (mpi::active() && distributable(s).empty()) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
 #endif
+  crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
@@ -114,19 +115,19 @@ Real Simulation<dim>::stable_dt() const {
 
 template <int dim>
 void Simulation<dim>::step(Real dt) {
-  advance(dt);
+  advance(dt, time_ + dt);
   time_ += dt;
 }
 
 template <int dim>
 void Simulation<dim>::step_until(double t) {
-  advance(static_cast<Real>(t - time_));
+  advance(static_cast<Real>(t - time_), t);
   time_ = t;
 }
 
 // One step: the phases of sim/phases.h in order.
 template <int dim>
-void Simulation<dim>::advance(Real dt) {
+void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::Bin, [&] { bin(); });
   timer_.run(Phase::P2G, [&] {
     if (!bed_.empty()) {  // the water's velocity along the bed, for the bed layer (sim/bed_layer.h)
@@ -144,7 +145,11 @@ void Simulation<dim>::advance(Real dt) {
   timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
   timer_.run(Phase::G2P, [&] { g2p(particles, grid, bins_); });
-  timer_.run(Phase::ConstitutiveUpdate, [&] { constitutive_update(particles, materials, dt); });
+  timer_.run(Phase::ConstitutiveUpdate, [&] {
+    crack_starts.before_update(particles);
+    constitutive_update(particles, materials, dt);
+    crack_starts.after_update(particles, materials, steps_ + 1, t_end);
+  });
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] { advect_phase(dt); });
   timer_.run(Phase::Sinks, [&] {

@@ -28,6 +28,7 @@
 #include "grid/grid.h"
 #include "grid/particle_bins.h"
 #include "material/material.h"
+#include "probe/crack_starts.h"
 #include "scene/scene.h"
 #include "sim/bed_layer.h"
 #include "sim/phases.h"
@@ -80,11 +81,14 @@ class Simulation {
   Real max_wave_speed = 0;   // over particles, updated each step
   Real max_speed = 0;        // max |v_p|, updated each step
   Real wave_dt_at_start = 0; // reference for detecting a collapsing time step
+  // Where and how the ice first breaks (probe/crack_starts.h), updated around each constitutive update; saved in
+  // checkpoints by the run (run/run_files.cpp).
+  CrackStartRecord<dim> crack_starts;
 
   static constexpr int reorder_interval = 8;  // steps between reorderings of particle memory by block
 
  private:
-  void advance(Real dt);
+  void advance(Real dt, double t_end);
   // The phases (sim/phases.h).
   void bin();
   void boundary_fold();

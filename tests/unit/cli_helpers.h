@@ -29,6 +29,14 @@ struct CliResult {
 
 inline std::string source_path(const std::string& rel) { return std::string(CDMPM_SOURCE_DIR) + "/" + rel; }
 
+// "key=value" for an override (--set, load_scene), the value with 17 significant digits (a double round trip).
+inline std::string set_value(const std::string& key, double value) {
+  std::ostringstream os;
+  os.precision(17);
+  os << key << '=' << value;
+  return os.str();
+}
+
 // A fresh, empty temporary directory, removed when the object dies.
 struct TempDir {
   fs::path path;

@@ -23,6 +23,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_helpers.h"
 #include "material/stress.h"
 #include "scene/scene_loader.h"
 #include "sim/simulation.h"
@@ -30,18 +31,14 @@
 namespace cdmpm {
 namespace {
 
+using testing::set_value;
+
 // The bar is scenes/ice_bar_2d.json: a 4 m x 0.25 m bar centred at x = parameters.centre whose initial
 // velocity gradient is diag(strain_rate, -nu/(1 - nu) strain_rate). Material constants come from the scene.
-std::string set(const std::string& key, double value) {
-  std::ostringstream os;
-  os.precision(17);
-  os << key << '=' << value;
-  return os.str();
-}
 
 Scene bar_scene(double strain_rate, double end) {
   return load_scene(std::string(CDMPM_SOURCE_DIR) + "/scenes/ice_bar_2d.json",
-                    {set("parameters.strain_rate", strain_rate), set("parameters.end", end), "output.frames=false"});
+                    {set_value("parameters.strain_rate", strain_rate), set_value("parameters.end", end), "output.frames=false"});
 }
 
 struct Bar {

@@ -123,7 +123,7 @@ TEST(Checkpoint, RoundTripsTheSolidStateAndRefusesTheOldFormat) {
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("CDMPMCK4"), std::string::npos) << what;
-    EXPECT_NE(what.find("CDMPMCK8"), std::string::npos) << what;
+    EXPECT_NE(what.find("CDMPMCK9"), std::string::npos) << what;
     EXPECT_NE(what.find("without --resume"), std::string::npos) << what;
   }
 }
