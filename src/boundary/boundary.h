@@ -108,8 +108,9 @@ class Boundary {
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).
   virtual void unfold_ghosts(Grid<dim>&) const {}
-  // Keeps a particle position on the material side of the boundary (walls and static slip boxes; see above).
-  virtual void keep_inside(Vec<dim>&) const {}
+  // Keeps a particle position (and, for a bathymetry, its velocity) on the material side of the boundary (walls,
+  // static slip boxes and well-balanced bathymetry; see above).
+  virtual void keep_inside(Vec<dim>&, Vec<dim>&) const {}
   // The well-balanced bed (sim/bed_layer.h): true if point x lies in the solid's bed layer, the part of the solid
   // within reach of its surface where fixed water particles complete the kernel support of the water above;
   // sets the surface's unit normal there (pointing into the material).

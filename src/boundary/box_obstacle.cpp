@@ -78,7 +78,7 @@ class BoxObstacle final : public Boundary<dim> {
     for_each_active_pair(g, [&](size_t src, size_t dst, int a) { unfold_pair(g, src, dst, a); });
   }
   // A particle that advected into a static slip box is put back on its nearest open face (see Walls).
-  void keep_inside(Vec<dim>& x) const override {
+  void keep_inside(Vec<dim>& x, Vec<dim>& /*v*/) const override {
     if (!mirrored()) return;
     int axis = -1, side = 0;
     Real best = std::numeric_limits<Real>::max();

@@ -62,7 +62,7 @@ class Walls final : public Boundary<dim> {
   void unfold_ghosts(Grid<dim>& g) const override {
     for_each_mirror_pair(g, true, [&](size_t s, size_t d, int a) { unfold_pair(g, s, d, a); });
   }
-  void keep_inside(Vec<dim>& x) const override {
+  void keep_inside(Vec<dim>& x, Vec<dim>& /*v*/) const override {
     for (int a = 0; a < dim; ++a) {
       if (on_[a][0] && x[a] < 0) x[a] = 0;
       if (on_[a][1] && x[a] > size_[a]) x[a] = size_[a];

@@ -1,6 +1,7 @@
 // advect.h - the advection phase: x_p <- x_p + dt v_p for every particle but the rigid ones (their bodies move
 // them rigidly, sim/rigid_bodies.h), then every particle is returned inside the walls (boundary.h,
-// keep_inside: a crossing is an interpolation overshoot of O(dt v)).
+// keep_inside: a crossing is an interpolation overshoot of O(dt v); a bathymetry also takes away the velocity into
+// its bed).
 #pragma once
 
 #include <memory>
@@ -24,7 +25,7 @@ void keep_inside(Particles<dim>& p, const std::vector<std::unique_ptr<Boundary<d
   const size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (size_t q = 0; q < n; ++q)
-    for (const auto& b : boundaries) b->keep_inside(p.x[q]);
+    for (const auto& b : boundaries) b->keep_inside(p.x[q], p.v[q]);
 }
 
 }  // namespace cdmpm
