@@ -74,11 +74,13 @@ class TimeLoop {
         result = *stop;
         break;
       }
-      progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
+      progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false,
+                       balance());
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
     if (result.status != "unstable") sim_.with_whole_state([&] { files_.checkpoint(); });
-    progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
+    progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true,
+                     balance());
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
@@ -171,6 +173,19 @@ class TimeLoop {
     if (const int sig = static_cast<int>(global::max(double(interrupt_signal()))))
       return RunResult{"interrupted", std::string("stopped by ") + interrupt_signal_name(sig), 128 + sig};
     return std::nullopt;
+  }
+
+  // The progress line's part for a distributed run: the particle imbalance max / mean over the ranks at the last
+  // sort (parallel/domain.h); empty in one process.
+  std::string balance() const {
+#ifdef CDMPM_MPI
+    if (const Domain<dim>* d = sim_.domain()) {
+      char buf[48];
+      std::snprintf(buf, sizeof buf, "  imbalance %.3f", d->last_imbalance());
+      return buf;
+    }
+#endif
+    return {};
   }
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
