@@ -1,5 +1,5 @@
 // runner.cpp - the time loop (see runner.h). Output files under --out: particles_NNNN.vtu + particles.pvd
-// (frames), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
+// (frames; a distributed run: per-rank pieces under particles_NNNN.pvtu), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
 // waves.csv for scenes with wave gauges (probe/wave_report.h), the hazard products for scenes with a fluid
 // (hazard/hazard_report.h).
 #include "run/runner.h"
@@ -54,8 +54,14 @@ class TimeLoop {
         e0_(whole_state_energy(sim_)), progress_(opt.progress, 0, scene.time.end) {}
 
   RunResult run() {
+#ifdef CDMPM_MPI
+    files_.set_pieces(sim_.domain() != nullptr && !opt_.gather_output);
+#endif
     if (opt_.resume) resume();
-    else sim_.with_whole_state([&] { files_.start(opt_.command_line); });
+    else {
+      sim_.with_whole_state([&] { files_.start(opt_.command_line); });
+      files_.write_frame_pieces();
+    }
     if (!opt_.resume) hazard_.init(sim_);
     times_.setup = elapsed();
     progress_.start_at(sim_.time());
@@ -151,6 +157,7 @@ class TimeLoop {
       files_.write_frame();
       if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
     });
+    files_.write_frame_pieces();
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)

@@ -18,7 +18,7 @@ files=$(cd "$work/one" && ls | grep -v -e '^run\.json$' -e '^summary\.json$')
 [ -n "$files" ] || { echo "the one-process run wrote nothing"; exit 1; }
 status=0
 for n in $ranks; do
-  "${MPIRUN:-mpirun}" -np "$n" --oversubscribe --allow-run-as-root "$mpi" run "$scene" --out "$work/np$n" --quiet --threads 1 "$@" > /dev/null
+  "${MPIRUN:-mpirun}" -np "$n" --oversubscribe --allow-run-as-root "$mpi" run "$scene" --out "$work/np$n" --quiet --threads 1 --gather-output "$@" > /dev/null
   for f in $files; do
     if ! cmp -s "$work/one/$f" "$work/np$n/$f"; then
       echo "np $n: $f differs from the one-process run's: $(cmp "$work/one/$f" "$work/np$n/$f" 2>&1 | head -1)"
