@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 
 #include "io/checkpoint_format.h"
 #include "scene/scene_loader.h"
@@ -241,6 +242,8 @@ int main(int argc, char** argv) {
     return fail(e, 2);
   } catch (const cdmpm::SceneError& e) {  // found while building the run, e.g. a body that seeds no particle
     return fail(e, 2);
+  } catch (const std::bad_alloc&) {  // the cause named: a rank of a distributed run that ran out of memory
+    return fail(std::runtime_error("out of memory: an allocation failed (std::bad_alloc)"), 1);
   } catch (const std::exception& e) {
     return fail(e, 1);
   }

@@ -15,6 +15,7 @@
 
 #include "hazard/hazard_report.h"
 #include "parallel/reduction.h"
+#include "run/fault_injection.h"
 #include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
@@ -117,6 +118,7 @@ class TimeLoop {
     if (hit) sim_.step_until(target);
     else sim_.step(dt);
     if (auto bad = sim_.check_state()) return bad;
+    fault_.after_step(sim_.steps());
     hazard_.sample(sim_);
     if (hit && target == next_sample) sample();
     if (hit && target == next_frame) frame();
@@ -198,6 +200,7 @@ class TimeLoop {
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
   const Clock::time_point start_ = Clock::now();
+  const FaultInjection fault_ = FaultInjection::from_environment();
   const Scene& scene_;
   const RunOptions& opt_;
   Simulation<dim> sim_;
