@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 
 #include "io/checkpoint_format.h"
 #include "scene/scene_loader.h"
@@ -114,13 +115,16 @@ int main(int argc, char** argv) {
   run->add_option("--steps", max_steps, "Stop after N steps (e.g. to measure speed and memory); summary.json says so")
       ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "No progress line");
-  bool force = false;
+  bool force = false, gather_output = false;
   run->add_flag("--force", force, "Run even if the estimate exceeds the machine's memory or the frame limit");
 #ifdef CDMPM_MPI
   run->add_option("--rebalance", cdmpm::rebalance_threshold,
                   "Distributed run: partition the blocks again when the particle imbalance max/mean over the ranks "
                   "exceeds this at a particle sort (default 1.1; results do not depend on it)")
       ->check(CLI::Range(1.0, 1e9));
+  run->add_flag("--gather-output", gather_output,
+                "Distributed run: write each frame as one .vtu gathered on rank 0, as one process does, instead of "
+                "per-rank pieces under a .pvtu");
 #endif
 
   std::vector<std::string> check_paths;
@@ -209,6 +213,7 @@ int main(int argc, char** argv) {
   opt.threads = threads;
   opt.progress = !quiet && speaks();
   opt.max_steps = max_steps;
+  opt.gather_output = gather_output;
   if (!resume_dir.empty()) {
     if (!out_dir.empty() && std::filesystem::path(out_dir) != std::filesystem::path(resume_dir)) {
       std::cerr << "cdmpm: error: --out and --resume name different directories; a resumed run writes into DIR\n";
@@ -237,6 +242,8 @@ int main(int argc, char** argv) {
     return fail(e, 2);
   } catch (const cdmpm::SceneError& e) {  // found while building the run, e.g. a body that seeds no particle
     return fail(e, 2);
+  } catch (const std::bad_alloc&) {  // the cause named: a rank of a distributed run that ran out of memory
+    return fail(std::runtime_error("out of memory: an allocation failed (std::bad_alloc)"), 1);
   } catch (const std::exception& e) {
     return fail(e, 1);
   }

@@ -79,3 +79,21 @@ def read_pvd(out):
     """The frames listed in OUT/particles.pvd as (time, file name) pairs, in the order written."""
     pvd = open(os.path.join(out, "particles.pvd")).read()
     return [(float(t), f) for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd)]
+
+
+def read_pvtu(path):
+    """(points (n, 3), {point-data name: array}) of a distributed run's frame: the .vtu pieces the .pvtu at PATH
+    lists (Piece Source, relative to its folder), concatenated in the listed order."""
+    folder = os.path.dirname(path)
+    pieces = re.findall(r'<Piece Source="([^"]+)"', open(path).read())
+    if not pieces:
+        raise ValueError(f"{path}: lists no piece")
+    parts = [read_vtu(os.path.join(folder, p)) for p in pieces]
+    points = np.concatenate([p[0] for p in parts])
+    data = {name: np.concatenate([p[1][name] for p in parts]) for name in parts[0][1]}
+    return points, data
+
+
+def read_frame(path):
+    """read_vtu or read_pvtu, by the file's extension."""
+    return read_pvtu(path) if path.endswith(".pvtu") else read_vtu(path)

@@ -30,13 +30,12 @@ struct ExtraFields {
   static constexpr size_t max_per_material = 16;
 };
 
-}  // namespace
-
+// The frame's positions, point fields and options.
 template <int dim>
-void write_frame(const std::string& path, const Simulation<dim>& sim) {
+void frame_data(const Simulation<dim>& sim, std::vector<double>& pts, std::vector<VtuField>& fields, VtuOptions& options) {
   const auto& P = sim.particles;
   const size_t n = P.size();
-  std::vector<double> pts(3 * n, 0.0);
+  pts.assign(3 * n, 0.0);
   VtuField vel{"velocity", 3, std::vector<float>(3 * n, 0.f), {}, {}};
   VtuField mat{"material", 1, {}, {}, std::vector<int32_t>(P.material.begin(), P.material.end())};
   VtuField pres{"pressure", 1, std::vector<float>(n), {}, {}};
@@ -72,20 +71,53 @@ void write_frame(const std::string& path, const Simulation<dim>& sim) {
     for (size_t k = 0; k < cols.size(); ++k) more[cols[k]].f32[q] = values[k];
   }
   // Moved, not copied: a frame's fields are the largest buffers of an output step.
-  std::vector<VtuField> fields;
+  fields.clear();
   for (VtuField* f : {&vel, &mat, &pres, &J, &stress, &id, &mass, &volume}) fields.push_back(std::move(*f));
   for (VtuField& f : more) fields.push_back(std::move(f));
-  VtuOptions options;
   options.compression = sim.scene.output.compress ? VtuCompression::ZLib : VtuCompression::None;
   options.positions = sim.scene.output.float32_positions ? VtuReal::Float32 : VtuReal::Float64;
   options.time = sim.time();
   VtuStrings names{kVtuMaterialNames, {}};
   for (const Material& mt : sim.materials) names.values.push_back(mt.name);
   options.metadata = {names};
+}
+
+}  // namespace
+
+template <int dim>
+void write_frame(const std::string& path, const Simulation<dim>& sim) {
+  std::vector<double> pts;
+  std::vector<VtuField> fields;
+  VtuOptions options;
+  frame_data(sim, pts, fields, options);
   write_vtu(path, pts, fields, options);
+}
+
+template <int dim>
+void write_frame_piece(const std::string& piece, const Simulation<dim>& sim, const std::string& pvtu,
+                       const std::vector<std::string>& pieces) {
+  std::vector<double> pts;
+  std::vector<VtuField> fields;
+  VtuOptions options;
+  frame_data(sim, pts, fields, options);
+  // The arrays' names and types for the .pvtu, also when this rank's piece is empty: one value of the type each.
+  std::vector<VtuField> types;
+  for (const VtuField& f : fields) {
+    VtuField t{f.name, f.components, {}, {}, {}};
+    if (f.name == "material") t.i32 = {0};
+    else if (f.name == "id") t.i64 = {0};
+    else t.f32 = {0.f};
+    types.push_back(std::move(t));
+  }
+  write_vtu(piece, pts, fields, options);
+  if (!pvtu.empty()) write_pvtu(pvtu, pieces, types, options);
 }
 
 template void write_frame<2>(const std::string&, const Simulation<2>&);
 template void write_frame<3>(const std::string&, const Simulation<3>&);
+template void write_frame_piece<2>(const std::string&, const Simulation<2>&, const std::string&,
+                                   const std::vector<std::string>&);
+template void write_frame_piece<3>(const std::string&, const Simulation<3>&, const std::string&,
+                                   const std::vector<std::string>&);
 
 }  // namespace cdmpm

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sim/simulation.h"
 
@@ -15,5 +16,11 @@ namespace cdmpm {
 
 template <int dim>
 void write_frame(const std::string& path, const Simulation<dim>& sim);
+
+// One rank's piece of a distributed run's frame: this rank's particles, as write_frame writes them, to `piece`;
+// and, if `pvtu` is not empty (rank 0), the .pvtu joining the pieces `pieces` (file names; io/vtu_writer.h).
+template <int dim>
+void write_frame_piece(const std::string& piece, const Simulation<dim>& sim, const std::string& pvtu,
+                       const std::vector<std::string>& pieces);
 
 }  // namespace cdmpm

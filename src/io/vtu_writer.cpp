@@ -319,6 +319,26 @@ void write_vtu(const std::string& path, const std::vector<double>& points, const
   out.commit();
 }
 
+void write_pvtu(const std::string& path, const std::vector<std::string>& pieces, const std::vector<VtuField>& fields,
+                const VtuOptions& options) {
+  std::string xml = "<?xml version=\"1.0\"?>\n"
+                    "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+  xml += options.compression == VtuCompression::ZLib ? " compressor=\"vtkZLibDataCompressor\">\n" : ">\n";
+  xml += "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
+  for (const VtuField& f : fields) {
+    const char* type = !f.f64.empty() ? "Float64" : !f.i32.empty() ? "Int32" : !f.i64.empty() ? "Int64" : "Float32";
+    xml += "      <PDataArray " + attrs(type, f.name, "NumberOfComponents", f.components) + "/>\n";
+  }
+  xml += "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"";
+  xml += options.positions == VtuReal::Float64 ? "Float64" : "Float32";
+  xml += "\" Name=\"Points\" NumberOfComponents=\"3\"/>\n    </PPoints>\n";
+  for (const std::string& piece : pieces) xml += "    <Piece Source=\"" + xml_escape(piece) + "\"/>\n";
+  xml += "  </PUnstructuredGrid>\n</VTKFile>\n";
+  AtomicFile out(path);
+  out.write(xml);
+  out.commit();
+}
+
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& frames) {
   std::string xml =
       "<?xml version=\"1.0\"?>\n"

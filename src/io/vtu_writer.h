@@ -64,6 +64,13 @@ struct VtuOptions {
 void write_vtu(const std::string& path, const std::vector<double>& points, const std::vector<VtuField>& fields,
                const VtuOptions& options = {});
 
+// Writes a .pvtu (VTK XML PUnstructuredGrid) that joins the .vtu pieces `pieces` (file names relative to the
+// .pvtu's folder, each written by write_vtu with the same fields and options) into one data set: the point arrays
+// of `fields` (name, type, components; their values are not read), the positions' precision and the compressor of
+// `options`. Atomically too. Format reference: VTK file formats, "Parallel File Formats".
+void write_pvtu(const std::string& path, const std::vector<std::string>& pieces, const std::vector<VtuField>& fields,
+                const VtuOptions& options);
+
 // Writes a .pvd collection listing (time, file name relative to the pvd's folder) pairs, atomically too.
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& frames);
 

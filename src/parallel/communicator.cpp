@@ -135,6 +135,10 @@ std::vector<Bytes> gather_to(const Bytes& local, bool everywhere) {
 std::vector<Bytes> allgather(const Bytes& local) { return gather_to(local, true); }
 std::vector<Bytes> gather(const Bytes& local) { return gather_to(local, false); }
 
+void barrier() {
+  if (active() && size() > 1) MPI_Barrier(MPI_COMM_WORLD);
+}
+
 void abort(const std::string& message, int code) {
   std::fprintf(stderr, "cdmpm: error (rank %d of %d): %s\n", rank(), size(), message.c_str());
   std::fflush(stderr);

@@ -61,6 +61,9 @@ std::vector<Bytes> allgather(const Bytes& local);
 // Every rank's buffer, in rank order, on rank 0 (an empty list elsewhere).
 std::vector<Bytes> gather(const Bytes& local);
 
+// Waits until every rank has called it.
+void barrier();
+
 // Prints "cdmpm: error (rank R of N): message" and ends every process of the run with exit code `code`.
 [[noreturn]] void abort(const std::string& message, int code);
 

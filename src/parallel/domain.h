@@ -3,10 +3,12 @@
 // exchanges (parallel/halo_exchange.h), and the dynamic load balancing: at each particle sort (every
 // Simulation::reorder_interval steps) the particle imbalance max / mean over the ranks is measured and, above
 // rebalance_threshold (mpirun option of `cdmpm run`: --rebalance, default 1.1), the blocks are partitioned again for
-// the current counts and the particles migrate. None of this changes a result: a run gives the same bits on any
-// number of ranks and with any threshold.
+// the current counts and the particles migrate. The imbalance measured at each sort (before any new partition) is
+// recorded: the last, the largest, and the largest after the first new partition (summary.json "distributed").
+// None of this changes a result: a run gives the same bits on any number of ranks and with any threshold.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "parallel/communicator.h"
 #include "parallel/halo_exchange.h"
 #include "parallel/migration.h"
+#include "parallel/mirror_zone.h"
 #include "parallel/partition.h"
 
 namespace cdmpm {
@@ -28,11 +31,11 @@ class Domain {
  public:
   // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
   // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
-  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size) : allowed_(allowed_cuts(g, domain_size)) {
+  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size) : zone_(g, domain_size) {
     std::vector<uint32_t> blocks;
     std::vector<uint64_t> counts;
     count_blocks(p, g, blocks, counts);
-    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count(), allowed_);
+    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count());
     keys_.resize(p.size());
     std::iota(keys_.begin(), keys_.end(), uint64_t(0));
     std::vector<uint32_t> kept;
@@ -64,8 +67,10 @@ class Domain {
       while (!read.done()) all_blocks.push_back(read.get<uint32_t>()), all_counts.push_back(read.get<uint64_t>());
     }
     last_imbalance_ = imbalance(rank_counts(part_, all_blocks, all_counts));
+    max_imbalance_ = std::max(max_imbalance_, last_imbalance_);
+    if (repartitions_ > 0) max_imbalance_repartitioned_ = std::max(max_imbalance_repartitioned_, last_imbalance_);
     if (mpi::size() == 1 || last_imbalance_ <= rebalance_threshold) return;
-    const BlockPartition next = balanced_partition(all_blocks, all_counts, mpi::size(), g.block_count(), allowed_);
+    const BlockPartition next = balanced_partition(all_blocks, all_counts, mpi::size(), g.block_count());
     if (next.first == part_.first) return;
     part_ = next;
     ++repartitions_;
@@ -78,9 +83,19 @@ class Domain {
 
   Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
 
+  // p2g with the halo exchanges (parallel/halo_exchange.h).
+  void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
+           Real dt) {
+    halo.p2g(p, materials, bins, g, dt, part_, zone_);
+  }
+
   HaloExchange<dim> halo;
   const BlockPartition& partition() const { return part_; }
+  // The particle imbalance max / mean over the ranks at the last sort, the largest at any sort, and the largest at
+  // the sorts after the first new partition (0 if there was none).
   double last_imbalance() const { return last_imbalance_; }
+  double max_imbalance() const { return max_imbalance_; }
+  double max_imbalance_repartitioned() const { return max_imbalance_repartitioned_; }
   long long repartitions() const { return repartitions_; }
   double migrated() const { return migrated_; }
 
@@ -94,10 +109,10 @@ class Domain {
     for (size_t j = 0; j < counts.size(); ++j) counts[j] = bins.start[j + 1] - bins.start[j];
   }
 
-  std::vector<uint8_t> allowed_;
+  MirrorZone<dim> zone_;
   BlockPartition part_;
   std::vector<uint64_t> keys_;
-  double last_imbalance_ = 1;
+  double last_imbalance_ = 1, max_imbalance_ = 1, max_imbalance_repartitioned_ = 0;
   long long repartitions_ = 0;
   double migrated_ = 0;
 };

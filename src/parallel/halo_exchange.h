@@ -10,8 +10,13 @@
 //    skipped (no explicit zeros, which would turn -0.0 into +0.0). Contributions only flow up the block order
 //    (b + {0,1}^dim >= b), so from lower ranks to higher ones. The owner also activates its blocks that only the
 //    received patches touch.
-// 2. Velocity copy (before g2p). After the grid update and the unfold, which run on complete sums (the mirror pairs
-//    of the walls are never cut, parallel/partition.h), each owner sends the velocities of its blocks that another
+// 3. Mirror zone (after the halo sum, before the fold; parallel/mirror_zone.h). A cut may separate a wall's ghost
+//    node from its mirror node. The owner of an active block b in a wall's zone sends it, complete, to every other
+//    rank owning a block of D(b): first the list of those blocks (before the grid is activated, so the receiver
+//    activates exactly the blocks active in one process), then after the halo sum their mass and momentum, which
+//    replace the receiver's partial values. Every rank then holds complete inputs for the fold, grid update and
+//    unfold of its own blocks, and computes them as one process does.
+// 2. Velocity copy (before g2p). After the grid update and the unfold, which run on complete sums (3.), each owner sends the velocities of its blocks that another
 //    rank holds as halo (the blocks the received patches touched) to that rank, which copies them into its halo.
 // Both sides list the exchanged blocks in ascending block order, so a message is the blocks' nodes, nothing else.
 #pragma once
@@ -23,6 +28,7 @@
 #include "grid/grid.h"
 #include "grid/particle_bins.h"
 #include "parallel/communicator.h"
+#include "parallel/mirror_zone.h"
 #include "parallel/partition.h"
 #include "transfer/p2g.h"
 
@@ -31,9 +37,9 @@ namespace cdmpm {
 template <int dim>
 class HaloExchange {
  public:
-  // p2g of this rank's particles with the halo sum (1. above); activates the grid first.
+  // p2g of this rank's particles with the halo sum (1. above) and the mirror zone (3.); activates the grid first.
   void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
-           Real dt, const BlockPartition& part) {
+           Real dt, const BlockPartition& part, const MirrorZone<dim>& zone) {
     const int me = mpi::rank(), ranks = mpi::size();
     // The bins whose patch reaches blocks of other ranks, and those ranks.
     std::vector<uint32_t> boundary;
@@ -88,6 +94,7 @@ class HaloExchange {
     }
     for (auto& list : shared_to_) sort_unique(list);
     sort_unique(extra);
+    announce_zone(bins, g, part, zone, extra);
     g.activate(bins.blocks, extra);
     cdmpm::p2g(p, materials, bins, g, dt, [&](int colour) {
       const auto& in = incoming_[colour];
@@ -98,6 +105,7 @@ class HaloExchange {
         add_patch(g, in[i].block, node);
       }
     });
+    share_zone(g);
   }
 
   // The velocity copy (2. above), after the unfold.
@@ -131,6 +139,65 @@ class HaloExchange {
     uint32_t block;
     const char* data;  // the patch records, in received_
   };
+  // 3. above, first part: the active own blocks of the mirror zone to the ranks owning blocks of their D, and
+  // theirs to `extra` (the blocks to activate besides those of the particles).
+  void announce_zone(const ParticleBins& bins, const Grid<dim>& g, const BlockPartition& part, const MirrorZone<dim>& zone,
+                     std::vector<uint32_t>& extra) {
+    const int me = mpi::rank(), ranks = mpi::size();
+    std::vector<uint32_t> mine = extra;  // this rank's active blocks: extra holds only own blocks so far
+    for (const uint32_t b : bins.blocks) {
+      const IVec<dim> c = g.block_coords(b);
+      for (int m = 0; m < (1 << dim); ++m) {
+        const size_t nb = g.upper_neighbour(c, m);
+        if (nb != Grid<dim>::npos && part.owner(nb) == me) mine.push_back(static_cast<uint32_t>(nb));
+      }
+    }
+    sort_unique(mine);
+    zone_to_.assign(ranks, {});
+    for (const uint32_t b : mine)
+      if (zone.holds(g, b))
+        zone.for_each_dependency(g, b, [&](size_t d) {
+          const int r = part.owner(d);
+          if (r != me) zone_to_[r].push_back(b);
+        });
+    std::vector<mpi::Bytes> out(ranks);
+    for (int r = 0; r < ranks; ++r) {
+      sort_unique(zone_to_[r]);
+      mpi::put(out[r], zone_to_[r].data(), zone_to_[r].size());
+    }
+    const std::vector<mpi::Bytes> in = mpi::exchange(out);
+    zone_from_.assign(ranks, {});
+    for (int r = 0; r < ranks; ++r) {
+      zone_from_[r].resize(in[r].size() / sizeof(uint32_t));
+      mpi::Reader{in[r]}.get(zone_from_[r].data(), zone_from_[r].size());
+      extra.insert(extra.end(), zone_from_[r].begin(), zone_from_[r].end());
+    }
+    sort_unique(extra);
+  }
+
+  // 3. above, second part: the complete mass and momentum of the announced blocks.
+  void share_zone(Grid<dim>& g) {
+    const int ranks = mpi::size();
+    constexpr size_t n = Grid<dim>::block_nodes;
+    std::vector<mpi::Bytes> out(ranks);
+    for (int r = 0; r < ranks; ++r)
+      for (const uint32_t b : zone_to_[r]) {
+        const size_t k = g.block_storage(b);
+        mpi::put(out[r], g.mass.data() + k, n);
+        mpi::put(out[r], g.momentum.data() + k, n);
+        halo_bytes_ += n * (sizeof(Real) + sizeof(Vec<dim>));
+      }
+    const std::vector<mpi::Bytes> in = mpi::exchange(out);
+    for (int r = 0; r < ranks; ++r) {
+      mpi::Reader read{in[r]};
+      for (const uint32_t b : zone_from_[r]) {
+        const size_t k = g.block_storage(b);
+        read.get(g.mass.data() + k, n);
+        read.get(g.momentum.data() + k, n);
+      }
+    }
+  }
+
   static void sort_unique(std::vector<uint32_t>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -140,6 +207,8 @@ class HaloExchange {
   std::vector<std::vector<Incoming>> incoming_;    // per colour
   std::vector<std::vector<uint32_t>> ghost_from_;  // per rank: its blocks that this rank holds as halo, ascending
   std::vector<std::vector<uint32_t>> shared_to_;   // per rank: this rank's blocks that rank holds as halo, ascending
+  std::vector<std::vector<uint32_t>> zone_to_;     // per rank: this rank's mirror-zone blocks sent there (3.)
+  std::vector<std::vector<uint32_t>> zone_from_;   // per rank: that rank's mirror-zone blocks received here (3.)
   double halo_bytes_ = 0;
 };
 

@@ -17,8 +17,10 @@ bool is_run_output_file(const std::string& name) {
       "hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
       "inundation_depth.asc", "crevasses.csv", "crack_starts.csv"};
   if (std::find(kFixed.begin(), kFixed.end(), name) != kFixed.end()) return true;
-  const std::string_view prefix = "particles_", suffix = ".vtu";
-  return name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) && name.ends_with(suffix);
+  const std::string_view prefix = "particles_";
+  for (const std::string_view suffix : {".vtu", ".pvtu"})  // frames, and a distributed run's pieces (_rR.vtu)
+    if (name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) && name.ends_with(suffix)) return true;
+  return false;
 }
 
 size_t prepare_output_dir(const fs::path& out) {

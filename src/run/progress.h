@@ -1,5 +1,6 @@
 // progress.h - the progress line of a run on stderr (every 2 s, and at the end): step, time, dt, particles,
-// particle-steps per second and the estimated wall time left; rewritten in place on a terminal.
+// particle-steps per second and the estimated wall time left, then `extra` (a distributed run: the particle
+// imbalance); rewritten in place on a terminal.
 #pragma once
 
 #include <unistd.h>
@@ -29,13 +30,14 @@ class Progress {
     last_ = std::chrono::steady_clock::now();
   }
   // Prints the line if enabled and (unless final) 2 s have passed since the last one.
-  void update(long long step, double t, double dt, size_t particles, double particle_steps, double wall, bool final) {
+  void update(long long step, double t, double dt, size_t particles, double particle_steps, double wall, bool final,
+              const std::string& extra = "") {
     if (!enabled_ || (!final && std::chrono::steady_clock::now() - last_ < std::chrono::seconds(2))) return;
     last_ = std::chrono::steady_clock::now();
     const double rate = particle_steps / std::max(wall, 1e-9);
     const double left = (end_ - t) / std::max(t - t_begin_, 1e-300) * wall;
-    std::fprintf(stderr, "%sstep %lld  t = %.5g / %.5g s  dt = %.3e s  particles %zu  %.3g particle-steps/s  left %s%s",
-                 tty_ ? "\r" : "", step, t, end_, dt, particles, rate, format_duration(left).c_str(),
+    std::fprintf(stderr, "%sstep %lld  t = %.5g / %.5g s  dt = %.3e s  particles %zu  %.3g particle-steps/s  left %s%s%s",
+                 tty_ ? "\r" : "", step, t, end_, dt, particles, rate, format_duration(left).c_str(), extra.c_str(),
                  final || !tty_ ? "\n" : "   ");
   }
 

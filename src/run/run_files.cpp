@@ -12,6 +12,9 @@
 #include "run/output_dir.h"
 #include "io/vtu_writer.h"
 #include "parallel/reduction.h"
+#ifdef CDMPM_MPI
+#include "parallel/communicator.h"
+#endif
 
 namespace cdmpm {
 namespace fs = std::filesystem;
@@ -119,12 +122,32 @@ template <int dim>
 void RunFiles<dim>::write_frame() {
   if (sim_.scene.output.frames) {
     char name[64];
-    std::snprintf(name, sizeof name, "particles_%04lld.vtu", meta.frame_index);
-    cdmpm::write_frame(path(name).string(), sim_);
+    std::snprintf(name, sizeof name, pieces_ ? "particles_%04lld.pvtu" : "particles_%04lld.vtu", meta.frame_index);
+    if (!pieces_) cdmpm::write_frame(path(name).string(), sim_);
     meta.frames.emplace_back(sim_.time(), name);
     write_pvd(path("particles.pvd").string(), meta.frames);
   }
   icebergs_.write_frame(bergs_, meta.frame_index);
+}
+
+template <int dim>
+void RunFiles<dim>::write_frame_pieces() {
+  if (!pieces_ || !sim_.scene.output.frames) return;
+#ifdef CDMPM_MPI
+  const int me = mpi::rank(), ranks = mpi::size();
+  mpi::barrier();  // rank 0 has prepared the folder (start)
+#else
+  const int me = 0, ranks = 1;
+#endif
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%04lld_r%d.vtu", meta.frame_index, r);
+    pieces.push_back(name);
+  }
+  char pvtu[64];
+  std::snprintf(pvtu, sizeof pvtu, "particles_%04lld.pvtu", meta.frame_index);
+  write_frame_piece(path(pieces[me]).string(), sim_, me == 0 ? path(pvtu).string() : std::string(), pieces);
 }
 
 template <int dim>

@@ -1,7 +1,9 @@
 // run_files.h - the files a run writes under its output folder, kept consistent with its checkpoints:
 //   probes.csv              one row per probe sample (probe/probes.h),
 //   icebergs.csv            scenes with breakable ice: the bodies of intact ice per frame (probe/iceberg_tracker.h),
-//   particles_NNNN.vtu      the frames (io/frame_writer.h), listed with their times in particles.pvd,
+//   particles_NNNN.vtu      the frames (io/frame_writer.h), listed with their times in particles.pvd; a
+//                           distributed run writing pieces (set_pieces): particles_NNNN_rR.vtu from every rank R
+//                           and particles_NNNN.pvtu joining them, which particles.pvd lists,
 //   checkpoint.bin          the state to resume from (io/checkpoint.h), with the sizes of the two CSV files at
 //                           that moment, so that a resumed run cuts them back to where the checkpoint was taken,
 //   run.json                provenance: the scene file (absolute path), the --set values, the command line, the
@@ -38,7 +40,14 @@ class RunFiles {
   void resume();
 
   void write_probes();
+  // The frame's list entry and particles.pvd (on the whole state), or with pieces only the list entry: the .pvtu
+  // is written by write_frame_pieces.
   void write_frame();
+  // With pieces, on every rank of a distributed run after write_frame: this rank's piece of the frame of index
+  // meta.frame_index, and on rank 0 its .pvtu.
+  void write_frame_pieces();
+  // Frames as one .pvtu of per-rank pieces (a distributed run, unless --gather-output) instead of one .vtu.
+  void set_pieces(bool on) { pieces_ = on; }
   // Detection at a probe sample (the first iceberg); true if it was found just now.
   bool sample_icebergs() { return icebergs_.sample(bergs_, meta.frame_index); }
   void checkpoint();
@@ -62,6 +71,7 @@ class RunFiles {
   IcebergTracker<dim>& icebergs_;
   HazardMap<dim>& hazard_;
   std::ofstream csv_, bergs_;
+  bool pieces_ = false;
 };
 
 }  // namespace cdmpm

@@ -1,5 +1,5 @@
 // runner.cpp - the time loop (see runner.h). Output files under --out: particles_NNNN.vtu + particles.pvd
-// (frames), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
+// (frames; a distributed run: per-rank pieces under particles_NNNN.pvtu), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
 // waves.csv for scenes with wave gauges (probe/wave_report.h), the hazard products for scenes with a fluid
 // (hazard/hazard_report.h).
 #include "run/runner.h"
@@ -15,6 +15,7 @@
 
 #include "hazard/hazard_report.h"
 #include "parallel/reduction.h"
+#include "run/fault_injection.h"
 #include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
@@ -54,8 +55,14 @@ class TimeLoop {
         e0_(whole_state_energy(sim_)), progress_(opt.progress, 0, scene.time.end) {}
 
   RunResult run() {
+#ifdef CDMPM_MPI
+    files_.set_pieces(sim_.domain() != nullptr && !opt_.gather_output);
+#endif
     if (opt_.resume) resume();
-    else sim_.with_whole_state([&] { files_.start(opt_.command_line); });
+    else {
+      sim_.with_whole_state([&] { files_.start(opt_.command_line); });
+      files_.write_frame_pieces();
+    }
     if (!opt_.resume) hazard_.init(sim_);
     times_.setup = elapsed();
     progress_.start_at(sim_.time());
@@ -74,11 +81,13 @@ class TimeLoop {
         result = *stop;
         break;
       }
-      progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false);
+      progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), false,
+                       balance());
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
     if (result.status != "unstable") sim_.with_whole_state([&] { files_.checkpoint(); });
-    progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true);
+    progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true,
+                     balance());
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
@@ -109,6 +118,7 @@ class TimeLoop {
     if (hit) sim_.step_until(target);
     else sim_.step(dt);
     if (auto bad = sim_.check_state()) return bad;
+    fault_.after_step(sim_.steps());
     hazard_.sample(sim_);
     if (hit && target == next_sample) sample();
     if (hit && target == next_frame) frame();
@@ -149,6 +159,7 @@ class TimeLoop {
       files_.write_frame();
       if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
     });
+    files_.write_frame_pieces();
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)
@@ -173,9 +184,23 @@ class TimeLoop {
     return std::nullopt;
   }
 
+  // The progress line's part for a distributed run: the particle imbalance max / mean over the ranks at the last
+  // sort (parallel/domain.h); empty in one process.
+  std::string balance() const {
+#ifdef CDMPM_MPI
+    if (const Domain<dim>* d = sim_.domain()) {
+      char buf[48];
+      std::snprintf(buf, sizeof buf, "  imbalance %.3f", d->last_imbalance());
+      return buf;
+    }
+#endif
+    return {};
+  }
+
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
   const Clock::time_point start_ = Clock::now();
+  const FaultInjection fault_ = FaultInjection::from_environment();
   const Scene& scene_;
   const RunOptions& opt_;
   Simulation<dim> sim_;

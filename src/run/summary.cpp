@@ -66,10 +66,14 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
   s["git_commit"] = CDMPM_GIT_COMMIT;
   s["threads"] = omp_get_max_threads();
 #ifdef CDMPM_MPI
-  // A distributed run (docs/architecture.md): its ranks, the repartitions, and rank 0's share of the traffic.
+  // A distributed run (docs/architecture.md): its ranks, the repartitions, the particle imbalance max / mean over the
+  // ranks at the particle sorts (the last, the largest, the largest after the first repartition), and rank 0's
+  // share of the traffic.
   if (const Domain<dim>* d = sim.domain())
     s["distributed"] = {{"ranks", mpi::size()}, {"repartitions", d->repartitions()},
-                        {"last_imbalance", d->last_imbalance()}, {"rank0_halo_bytes", d->halo.halo_bytes()},
+                        {"last_imbalance", d->last_imbalance()}, {"max_imbalance", d->max_imbalance()},
+                        {"max_imbalance_after_first_repartition", d->max_imbalance_repartitioned()},
+                        {"rank0_halo_bytes", d->halo.halo_bytes()},
                         {"rank0_migrated_particles", d->migrated()}};
 #endif
   s["precision"] = sizeof(Real) == 8 ? "double" : "single";

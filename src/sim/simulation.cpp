@@ -136,7 +136,7 @@ void Simulation<dim>::advance(Real dt, double t_end) {
       grid.clear();
     }
 #ifdef CDMPM_MPI
-    if (domain_) return domain_->halo.p2g(particles, materials, bins_, grid, dt, domain_->partition());
+    if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);
 #endif
     p2g(particles, materials, bins_, grid, dt);
     if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);

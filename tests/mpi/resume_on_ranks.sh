@@ -7,17 +7,12 @@
 set -eu
 serial=$1 mpi=$2 scene=$3 work=$4 first=$5 then=$6 stop=$7 end=$8
 shift 8
-[ -x "$serial" ] || { echo "no program without MPI at $serial (configure and build one: cmake -S . -B build)"; exit 1; }
-run="${MPIRUN:-mpirun} --oversubscribe --allow-run-as-root"
-rm -rf "$work"
-mkdir -p "$work"
-"$serial" run "$scene" --out "$work/straight" --quiet --threads 1 --set time.end="$end" "$@" > /dev/null
-$run -np "$first" "$mpi" run "$scene" --out "$work/resumed" --quiet --threads 1 --set time.end="$stop" "$@" > /dev/null
-$run -np "$then" "$mpi" run --resume "$work/resumed" --quiet --threads 1 --set time.end="$end" > /dev/null
+. "$(dirname "$0")/straight_run.sh"
+straight_run "$serial" "$scene" "$work" "$end" "$@"
+$run -np "$first" "$mpi" run "$scene" --out "$work/resumed" --quiet --threads 1 --gather-output --set time.end="$stop" "$@" > /dev/null
+$run -np "$then" "$mpi" run --resume "$work/resumed" --quiet --threads 1 --gather-output --set time.end="$end" > /dev/null
 status=0
 # scene.resolved.json records the first part's time.end, as in one process's resumed runs.
-for f in $(cd "$work/straight" && ls | grep -v -e '^run\.json$' -e '^summary\.json$' -e '^scene\.resolved\.json$'); do
-  cmp -s "$work/straight/$f" "$work/resumed/$f" || { echo "$f differs from the straight run's"; status=1; }
-done
+same_as_straight "$work" "$work/resumed" scene.resolved.json || status=1
 [ $status -eq 0 ] && echo "np $first to t = $stop, resumed on np $then to t = $end: the straight one-process run's files"
 exit $status

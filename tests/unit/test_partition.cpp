@@ -1,13 +1,15 @@
 // test_partition.cpp - the decomposition of a distributed run (parallel/partition.h): contiguous ranges of the
 // global block order, particle counts balanced to within one block's count of the mean (the cut nearest each target
 // r N / ranks is at most half a block's count away from it, so a rank's count, the difference of two such prefixes,
-// is within one block's count of the mean), and no cut between a wall's ghost node and its mirror node
-// (boundary/walls.cpp: node -k mirrors k at the lower face, top + k mirrors top - k at the upper one).
+// is within one block's count of the mean), and the mirror zone that lets a cut fall between a wall's ghost node
+// and its mirror node (parallel/mirror_zone.h; boundary/walls.cpp: node -k mirrors k at the lower face, top + k
+// mirrors top - k at the upper one).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
+#include "parallel/mirror_zone.h"
 #include "parallel/partition.h"
 
 namespace cdmpm {
@@ -27,7 +29,6 @@ void random_counts(const Grid<dim>& g, unsigned seed, std::vector<uint32_t>& blo
 template <int dim>
 void check_contiguous_and_balanced(const Vec<dim>& size, Real dx) {
   const Grid<dim> g(size, dx);
-  const std::vector<uint8_t> all(g.block_count() + 1, 1);
   for (unsigned seed = 1; seed <= 5; ++seed) {
     std::vector<uint32_t> blocks;
     std::vector<uint64_t> counts;
@@ -35,7 +36,7 @@ void check_contiguous_and_balanced(const Vec<dim>& size, Real dx) {
     uint64_t total = 0, biggest = 0;
     for (const uint64_t n : counts) total += n, biggest = std::max(biggest, n);
     for (int ranks = 1; ranks <= 7; ++ranks) {
-      const BlockPartition p = balanced_partition(blocks, counts, ranks, g.block_count(), all);
+      const BlockPartition p = balanced_partition(blocks, counts, ranks, g.block_count());
       ASSERT_EQ(p.ranks(), ranks);
       EXPECT_EQ(p.first.front(), 0u);
       EXPECT_EQ(p.first.back(), g.block_count());
@@ -57,44 +58,51 @@ TEST(Partition, ContiguousRangesBalancedWithinOneBlock3D) {
   check_contiguous_and_balanced<3>(Vec<3>(1.0, 0.3, 0.5), 0.05);
 }
 
-// Every mirror pair of every face (ghost node and mirror node) has one owner, for partitions into many ranks.
+// The mirror zone (parallel/mirror_zone.h): for every node i and every set of axes, the node reached from i by
+// reflecting it across the faces of those axes where it is a ghost or a mirror node (-k <-> k at the lower face,
+// top + k <-> top - k at the upper one, k = 1 .. ghost; the chains of the fold and unfold) lies in a block of
+// D(block of i); and D is symmetric.
 template <int dim>
-void check_mirror_pairs_never_cut(const Vec<dim>& size, Real dx) {
+void check_mirror_zone(const Vec<dim>& size, Real dx) {
   const Grid<dim> g(size, dx);
-  const std::vector<uint8_t> allowed = allowed_cuts(g, size);
-  std::vector<uint32_t> blocks;
-  std::vector<uint64_t> counts;
-  random_counts(g, 7, blocks, counts);
-  for (int ranks : {2, 5, 16, 64}) {
-    const BlockPartition p = balanced_partition(blocks, counts, ranks, g.block_count(), allowed);
-    for (int r = 0; r <= ranks; ++r) ASSERT_TRUE(allowed[p.first[r]]);
-    int pairs = 0;
-    for (int a = 0; a < dim; ++a) {
-      const int top = static_cast<int>(std::lround(size[a] / dx));
-      size_t nodes = 1;
-      for (int b = 0; b < dim; ++b) nodes *= static_cast<size_t>(g.n_nodes[b]);
-      for (size_t k = 0; k < nodes; ++k) {
-        IVec<dim> i;  // lattice node k, from -ghost on every axis
-        for (size_t rest = k, b = dim; b-- > 0; rest /= static_cast<size_t>(g.n_nodes[b]))
-          i[b] = static_cast<int>(rest % static_cast<size_t>(g.n_nodes[b])) - Grid<dim>::ghost;
-        for (int depth = 1; depth <= Grid<dim>::ghost; ++depth)
-          for (const auto& [ghost_node, mirror_node] : {std::pair{-depth, depth}, std::pair{top + depth, top - depth}}) {
-            if (i[a] != ghost_node) continue;
-            IVec<dim> j = i;
-            j[a] = mirror_node;
-            if (j[a] + Grid<dim>::ghost >= g.n_nodes[a] || i[a] + Grid<dim>::ghost >= g.n_nodes[a]) continue;
-            ++pairs;
-            ASSERT_EQ(p.owner(g.block_index(g.block_of(i))), p.owner(g.block_index(g.block_of(j))))
-                << "axis " << a << " node " << i.transpose() << " and its mirror " << j.transpose() << ", " << ranks << " ranks";
-          }
+  const MirrorZone<dim> zone(g, size);
+  auto in_d = [&](size_t b, size_t c) {
+    bool found = false;
+    zone.for_each_dependency(g, b, [&](size_t d) { found = found || d == c; });
+    return found;
+  };
+  int chains = 0;
+  size_t nodes = 1;
+  for (int b = 0; b < dim; ++b) nodes *= static_cast<size_t>(g.n_nodes[b]);
+  for (size_t k = 0; k < nodes; ++k) {
+    IVec<dim> i;  // lattice node k, from -ghost on every axis
+    for (size_t rest = k, b = dim; b-- > 0; rest /= static_cast<size_t>(g.n_nodes[b]))
+      i[b] = static_cast<int>(rest % static_cast<size_t>(g.n_nodes[b])) - Grid<dim>::ghost;
+    for (int axes = 1; axes < (1 << dim); ++axes) {
+      IVec<dim> j = i;
+      bool moved = false;
+      for (int a = 0; a < dim; ++a) {
+        if (!(axes >> a & 1)) continue;
+        const int top = static_cast<int>(std::lround(size[a] / dx));
+        if (std::abs(i[a]) >= 1 && std::abs(i[a]) <= Grid<dim>::ghost) j[a] = -i[a], moved = true;
+        else if (std::abs(i[a] - top) >= 1 && std::abs(i[a] - top) <= Grid<dim>::ghost) j[a] = 2 * top - i[a], moved = true;
       }
+      if (!moved) continue;
+      bool inside = true;
+      for (int a = 0; a < dim; ++a) inside = inside && j[a] + Grid<dim>::ghost >= 0 && j[a] + Grid<dim>::ghost < g.n_nodes[a];
+      if (!inside) continue;
+      ++chains;
+      const size_t bi = g.block_index(g.block_of(i)), bj = g.block_index(g.block_of(j));
+      ASSERT_TRUE(in_d(bi, bj)) << "node " << i.transpose() << " reflects to " << j.transpose();
     }
-    EXPECT_GT(pairs, 0);
   }
+  EXPECT_GT(chains, 0);
+  for (size_t b = 0; b < g.block_count(); ++b)
+    zone.for_each_dependency(g, b, [&](size_t c) { ASSERT_TRUE(in_d(c, b)) << "blocks " << b << " and " << c; });
 }
 
-TEST(Partition, WallMirrorPairsShareTheirOwner2D) { check_mirror_pairs_never_cut<2>(Vec<2>(1.0, 0.6), 0.02); }
-TEST(Partition, WallMirrorPairsShareTheirOwner3D) { check_mirror_pairs_never_cut<3>(Vec<3>(0.6, 0.3, 0.4), 0.05); }
+TEST(Partition, MirrorZoneHoldsEveryFoldChain2D) { check_mirror_zone<2>(Vec<2>(1.0, 0.6), 0.02); }
+TEST(Partition, MirrorZoneHoldsEveryFoldChain3D) { check_mirror_zone<3>(Vec<3>(0.6, 0.3, 0.4), 0.05); }
 
 TEST(Partition, Imbalance) {
   EXPECT_DOUBLE_EQ(imbalance({10, 10, 10}), 1.0);
