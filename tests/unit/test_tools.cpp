@@ -36,6 +36,8 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
                         "validate_dam_break", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_eqip"), "--skip-run", "--out", none}),
                         "validate_eqip", none);
+  expect_one_line_error(run_program(kPython, {source_path("tools/validate_runup"), "--skip-run", "--out", none}),
+                        "validate_runup", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/runup_linear.py"), "0.1-2.5"}), "runup_linear", "0.1-2.5");
   expect_one_line_error(run_program(kPython, {source_path("tools/cliff_stress.py"), none, "0"}), "cliff_stress", none);
 }
