@@ -7,6 +7,7 @@
 // number of ranks and with any threshold.
 #pragma once
 
+#include <array>
 #include <cstdio>
 #include <vector>
 
@@ -28,7 +29,12 @@ class Domain {
  public:
   // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
   // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
-  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size) : allowed_(allowed_cuts(g, domain_size)) {
+  // `joined`: pairs of blocks that one rank must own together besides the walls' (the mirror pairs of static slip
+  // boxes, Boundary::mirror_node_pairs).
+  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size,
+         const std::vector<std::array<size_t, 2>>& joined = {})
+      : allowed_(allowed_cuts(g, domain_size)) {
+    for (const auto& [a, b] : joined) keep_together(allowed_, a, b);
     std::vector<uint32_t> blocks;
     std::vector<uint64_t> counts;
     count_blocks(p, g, blocks, counts);
@@ -40,8 +46,7 @@ class Domain {
       if (part_.owner(particle_block(p, q, g)) == mpi::rank()) kept.push_back(static_cast<uint32_t>(q));
     if (kept.size() != p.size()) {
       p.permute(kept);
-      for (size_t k = 0; k < kept.size(); ++k) keys_[k] = keys_[kept[k]];
-      keys_.resize(kept.size());
+      keep_keys(keys_, kept);
     }
   }
 
@@ -75,6 +80,12 @@ class Domain {
 
   // After advection: particles to the ranks owning their blocks.
   void migrate_particles(Particles<dim>& p, const Grid<dim>& g) { migrated_ += migrate(p, keys_, g, part_); }
+
+  // After the sinks removed particles (p.permute(kept)): their keys go with them (sim/sinks.h).
+  void removed(const std::vector<uint32_t>& kept) { keep_keys(keys_, kept); }
+
+  // The order keys of this rank's particles (their indices in the one-process array at the last sort), ascending.
+  const std::vector<uint64_t>& keys() const { return keys_; }
 
   Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
 

@@ -10,7 +10,9 @@
 // at the lower face, and in the blocks of nodes top - 3 .. top + 3 at the upper face (top = the face's node). Their
 // fold and unfold then run on the one rank that owns both, after the halo sum, with the same inputs as in one
 // process. Every face is treated so, whatever its boundary (a conservative choice: it keeps at most two or three
-// block layers at each face together).
+// block layers at each face together). The mirror pairs of static slip boxes (boundary/box_obstacle.cpp) are kept
+// together the same way, pair by pair (keep_together): the cuts between the blocks of a ghost node inside the box
+// and of its mirror node outside it are forbidden.
 // Pure functions of their inputs: every rank computes the same partition from the same counts.
 #pragma once
 
@@ -77,6 +79,11 @@ std::vector<uint8_t> allowed_cuts(const Grid<dim>& g, const Vec<dim>& domain_siz
   }
   allowed[0] = allowed[nb] = 1;
   return allowed;
+}
+
+// Forbids every cut between blocks a and b (in either order), so that one rank owns both.
+inline void keep_together(std::vector<uint8_t>& allowed, size_t a, size_t b) {
+  for (size_t c = std::min(a, b) + 1; c <= std::max(a, b); ++c) allowed[c] = 0;
 }
 
 // The partition of `block_count` blocks over `ranks` ranks for particle counts `counts` of blocks `blocks`
