@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "parallel/reduction.h"
 #include "sim/simulation.h"
 
 namespace cdmpm {
@@ -107,7 +108,8 @@ class AbsorbingLayer final : public Boundary<dim> {
     return (i - lo_) * across_ + j;
   }
   // eta of every column: the highest fluid particle in it plus half its spacing, minus still_level (0 in an
-  // empty column). Maxima are exact in any order, so the result is the same on any number of threads.
+  // empty column). Maxima are exact in any order, so the result is the same on any number of threads, and, taken
+  // over the ranks of a distributed run (global::max: every rank then holds every column), on any number of ranks.
   void measure_surface(const Simulation<dim>& sim) {
     const auto& P = sim.particles;
     constexpr Real none = -std::numeric_limits<Real>::infinity();
@@ -126,6 +128,7 @@ class AbsorbingLayer final : public Boundary<dim> {
 #pragma omp critical(cdmpm_absorbing_layer)
       for (size_t c = 0; c < top.size(); ++c) top[c] = std::max(top[c], mine[c]);
     }
+    global::max(top);
     for (size_t c = 0; c < top.size(); ++c) eta_[c] = top[c] == none ? 0 : top[c] - still_level_;
   }
 

@@ -108,6 +108,10 @@ class Boundary {
   virtual void fold_ghosts(Grid<dim>&) const {}
   // Sets ghost-node velocities to the reflected velocities of their mirror nodes (after grid_update).
   virtual void unfold_ghosts(Grid<dim>&) const {}
+  // The (ghost, mirror) node pairs that fold_ghosts and unfold_ghosts combine, for boundaries inside the domain
+  // (static slip boxes; the domain walls' pairs are shared between ranks by parallel/mirror_zone.h): a
+  // distributed run keeps the blocks of each pair on one rank, so the fold and unfold see the one-process sums.
+  virtual std::vector<std::array<IVec<dim>, 2>> mirror_node_pairs(const Grid<dim>&) const { return {}; }
   // Keeps a particle position (and, for a bathymetry, its velocity) on the material side of the boundary (walls,
   // static slip boxes and well-balanced bathymetry; see above).
   virtual void keep_inside(Vec<dim>&, Vec<dim>&) const {}

@@ -77,6 +77,11 @@ class BoxObstacle final : public Boundary<dim> {
   void unfold_ghosts(Grid<dim>& g) const override {
     for_each_active_pair(g, [&](size_t src, size_t dst, int a) { unfold_pair(g, src, dst, a); });
   }
+  std::vector<std::array<IVec<dim>, 2>> mirror_node_pairs(const Grid<dim>& g) const override {
+    std::vector<std::array<IVec<dim>, 2>> out;
+    for (const MirrorPair& m : mirror_pairs(g)) out.push_back({m.src, m.dst});
+    return out;
+  }
   // A particle that advected into a static slip box is put back on its nearest open face (see Walls).
   void keep_inside(Vec<dim>& x, Vec<dim>& /*v*/) const override {
     if (!mirrored()) return;

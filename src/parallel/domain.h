@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <vector>
 
@@ -31,11 +32,17 @@ class Domain {
  public:
   // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
   // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
-  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size) : zone_(g, domain_size) {
+  // `joined`: pairs of blocks that one rank must own together (the mirror pairs of static slip boxes,
+  // Boundary::mirror_node_pairs; the walls' pairs are shared instead, parallel/mirror_zone.h).
+  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size,
+         const std::vector<std::array<size_t, 2>>& joined = {})
+      : zone_(g, domain_size) {
+    if (!joined.empty()) allowed_ = every_cut(g.block_count());
+    for (const auto& [a, b] : joined) keep_together(allowed_, a, b);
     std::vector<uint32_t> blocks;
     std::vector<uint64_t> counts;
     count_blocks(p, g, blocks, counts);
-    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count());
+    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count(), allowed_);
     keys_.resize(p.size());
     std::iota(keys_.begin(), keys_.end(), uint64_t(0));
     std::vector<uint32_t> kept;
@@ -43,8 +50,7 @@ class Domain {
       if (part_.owner(particle_block(p, q, g)) == mpi::rank()) kept.push_back(static_cast<uint32_t>(q));
     if (kept.size() != p.size()) {
       p.permute(kept);
-      for (size_t k = 0; k < kept.size(); ++k) keys_[k] = keys_[kept[k]];
-      keys_.resize(kept.size());
+      keep_keys(keys_, kept);
     }
   }
 
@@ -70,7 +76,7 @@ class Domain {
     max_imbalance_ = std::max(max_imbalance_, last_imbalance_);
     if (repartitions_ > 0) max_imbalance_repartitioned_ = std::max(max_imbalance_repartitioned_, last_imbalance_);
     if (mpi::size() == 1 || last_imbalance_ <= rebalance_threshold) return;
-    const BlockPartition next = balanced_partition(all_blocks, all_counts, mpi::size(), g.block_count());
+    const BlockPartition next = balanced_partition(all_blocks, all_counts, mpi::size(), g.block_count(), allowed_);
     if (next.first == part_.first) return;
     part_ = next;
     ++repartitions_;
@@ -80,6 +86,12 @@ class Domain {
 
   // After advection: particles to the ranks owning their blocks.
   void migrate_particles(Particles<dim>& p, const Grid<dim>& g) { migrated_ += migrate(p, keys_, g, part_); }
+
+  // After the sinks removed particles (p.permute(kept)): their keys go with them (sim/sinks.h).
+  void removed(const std::vector<uint32_t>& kept) { keep_keys(keys_, kept); }
+
+  // The order keys of this rank's particles (their indices in the one-process array at the last sort), ascending.
+  const std::vector<uint64_t>& keys() const { return keys_; }
 
   Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
 
@@ -110,6 +122,7 @@ class Domain {
   }
 
   MirrorZone<dim> zone_;
+  std::vector<uint8_t> allowed_;  // where cuts may lie (partition.h; empty: anywhere)
   BlockPartition part_;
   std::vector<uint64_t> keys_;
   double last_imbalance_ = 1, max_imbalance_ = 1, max_imbalance_repartitioned_ = 0;

@@ -70,6 +70,12 @@ size_t particle_block(const Particles<dim>& p, size_t q, const Grid<dim>& g) {
   return g.block_index(g.block_of(s.base));
 }
 
+// The keys of the particles kept by p.permute(kept) (kept ascending: a removal or a departure), in place.
+inline void keep_keys(std::vector<uint64_t>& keys, const std::vector<uint32_t>& kept) {
+  for (size_t k = 0; k < kept.size(); ++k) keys[k] = keys[kept[k]];
+  keys.resize(kept.size());
+}
+
 // Rebuilds p (and keys) from records, in key order.
 template <int dim>
 void rebuild_in_key_order(std::vector<ParticleRecord<dim>>& records, Particles<dim>& p, std::vector<uint64_t>& keys) {
@@ -118,8 +124,7 @@ size_t migrate(Particles<dim>& p, std::vector<uint64_t>& keys, const Grid<dim>& 
   if (arrivals.empty()) {
     if (sent == 0) return 0;
     p.permute(kept);  // an increasing subset: compacted in place, order kept
-    for (size_t k = 0; k < kept.size(); ++k) keys[k] = keys[kept[k]];
-    keys.resize(kept.size());
+    keep_keys(keys, kept);
     return sent;
   }
   arrivals.reserve(arrivals.size() + kept.size());

@@ -7,6 +7,9 @@
 //
 // Any block boundary may be a cut, also one between a wall's ghost node and its mirror node: the ranks then share
 // the blocks of the mirror pairs before the fold (parallel/mirror_zone.h).
+// The mirror pairs of static slip boxes (boundary/box_obstacle.cpp) are kept on one rank instead, pair by pair
+// (keep_together): the cuts between the blocks of a ghost node inside the box and of its mirror node outside it are
+// forbidden (`allowed`, empty when every cut is allowed).
 // Pure functions of their inputs: every rank computes the same partition from the same counts.
 #pragma once
 
@@ -29,10 +32,18 @@ struct BlockPartition {
   }
 };
 
+// Per cut position c = 0 .. block_count (blocks < c before the cut): 1 if a cut may lie there; all allowed.
+inline std::vector<uint8_t> every_cut(size_t block_count) { return std::vector<uint8_t>(block_count + 1, 1); }
+
+// Forbids every cut between blocks a and b (in either order), so that one rank owns both.
+inline void keep_together(std::vector<uint8_t>& allowed, size_t a, size_t b) {
+  for (size_t c = std::min(a, b) + 1; c <= std::max(a, b); ++c) allowed[c] = 0;
+}
+
 // The partition of `block_count` blocks over `ranks` ranks for particle counts `counts` of blocks `blocks`
-// (ascending, distinct).
+// (ascending, distinct), cutting only where `allowed` says so (empty: anywhere).
 inline BlockPartition balanced_partition(const std::vector<uint32_t>& blocks, const std::vector<uint64_t>& counts,
-                                         int ranks, size_t block_count) {
+                                         int ranks, size_t block_count, const std::vector<uint8_t>& allowed = {}) {
   BlockPartition p;
   p.first.assign(static_cast<size_t>(ranks) + 1, 0);
   p.first[ranks] = static_cast<uint32_t>(block_count);
@@ -44,13 +55,14 @@ inline BlockPartition balanced_partition(const std::vector<uint32_t>& blocks, co
   size_t c = 0;
   for (int r = 1; r < ranks; ++r) {
     const double target = double(total) * r / ranks;
-    // Advance c while that brings the prefix closer to the target.
+    // Advance c over allowed positions while that brings the prefix closer to the target.
     size_t best = c;
     uint64_t best_before = before;
     size_t cj = j;
     uint64_t cb = before;
     for (size_t d = c; d <= block_count; ++d) {
       while (cj < blocks.size() && blocks[cj] < d) cb += counts[cj++];
+      if (!allowed.empty() && !allowed[d]) continue;
       if (std::abs(double(cb) - target) < std::abs(double(best_before) - target)) best = d, best_before = cb;
       if (double(cb) >= target) break;
     }

@@ -140,12 +140,15 @@ class RigidBodies {
   // Index into `bodies` of the body made of `material`, -1 if that material is not rigid.
   int index_of_material(int material) const { return body_of_[material]; }
 
-  // After g2p at time `time`: replaces the rigid particles' v and C by their bodies' rigid motion.
-  void project(Particles<dim>& p, double time, Real dt, Real dx) {
+  // After g2p at time `time`: replaces the rigid particles' v and C by their bodies' rigid motion. `keys`: in a
+  // distributed run, the order keys of this rank's particles (parallel/migration.h); null when p is the whole set.
+  void project(Particles<dim>& p, double time, Real dt, Real dx, const std::vector<uint64_t>* keys = nullptr) {
     if (bodies.empty()) return;
     const Real D = dx * dx / 4;
     const size_t n = p.size(), nb = bodies.size();
     const std::vector<int>& body_of = body_of_;
+    // The rigid particles in the one-process array order, the order of the sums below (bodies_in_order).
+    const std::vector<Sample> s = samples_in_order(p, keys);
     // Pass 1: mass, centre of mass and momentum (serial: sums independent of the thread count). The sums over
     // a body's particles are accumulated in double, so that a single-precision build keeps the body's momentum
     // to its own round-off rather than to that of a float sum over thousands of particles.
@@ -154,17 +157,13 @@ class RigidBodies {
     using DInertia = Eigen::Matrix<double, RigidBody<dim>::rot, RigidBody<dim>::rot>;
     std::vector<double> mass(nb, 0.0);
     std::vector<DVec> first(nb, DVec::Zero()), momentum(nb, DVec::Zero());
-    for (size_t q = 0; q < n; ++q) {
-      const int b = body_of[p.material[q]];
-      if (b < 0) continue;
-      const double m = p.mass[q];
+    for (const Sample& q : s) {
+      const int b = q.body;
+      const double m = q.mass;
       mass[b] += m;
-      first[b] += m * p.x[q].template cast<double>();
-      momentum[b] += m * p.v[q].template cast<double>();
+      first[b] += m * q.x.template cast<double>();
+      momentum[b] += m * q.v.template cast<double>();
     }
-    global::sum(mass);
-    global::sum(first);
-    global::sum(momentum);
     std::vector<Vec<dim>> origin(nb);
     for (size_t b = 0; b < nb; ++b) {
       bodies[b].mass = mass[b];
@@ -174,15 +173,12 @@ class RigidBodies {
     // Pass 2: angular momentum and inertia about the body's origin (centre of mass or pivot).
     std::vector<DSpin> L(nb, DSpin::Zero());
     std::vector<DInertia> I(nb, DInertia::Zero());
-    for (size_t q = 0; q < n; ++q) {
-      const int b = body_of[p.material[q]];
-      if (b < 0) continue;
-      const Vec<dim> r = p.x[q] - origin[b];
-      L[b] += (p.mass[q] * (A::cross(r, p.v[q]) + D * A::axial2(p.C[q]))).template cast<double>();
-      I[b] += A::inertia(p.mass[q], r, D).template cast<double>();
+    for (const Sample& q : s) {
+      const int b = q.body;
+      const Vec<dim> r = q.x - origin[b];
+      L[b] += (q.mass * (A::cross(r, q.v) + D * A::axial2(q.C))).template cast<double>();
+      I[b] += A::inertia(q.mass, r, D).template cast<double>();
     }
-    global::sum(L);
-    global::sum(I);
     for (size_t b = 0; b < nb; ++b) {
       RigidBody<dim>& B = bodies[b];
       B.inertia = I[b].template cast<Real>();
@@ -277,6 +273,33 @@ class RigidBodies {
   }
 
  private:
+  // One rigid particle's inputs to its body's sums, and its place in the one-process array.
+  struct Sample {
+    uint64_t key;
+    int body;
+    Real mass;
+    Vec<dim> x, v;
+    Mat<dim> C;
+  };
+  // The rigid particles of every body in the order of the one-process array, on every rank. The sums of project()
+  // then add them in that order, the bits of one process on any number of ranks (per-rank partial sums added in
+  // rank order would differ in the last bits, and between two sorts a rank's particles are not a contiguous range
+  // of the one-process array anyway: migrants keep their keys). A distributed run concatenates every rank's
+  // samples (global::concatenate) and sorts them by key; the cost is an all-gather of the bodies' particles each
+  // step (small: a body is a few thousand particles in the laboratory scenes).
+  std::vector<Sample> samples_in_order(const Particles<dim>& p, const std::vector<uint64_t>* keys) const {
+    std::vector<Sample> s;
+    for (size_t q = 0; q < p.size(); ++q) {
+      const int b = body_of_[p.material[q]];
+      if (b >= 0) s.push_back({keys ? (*keys)[q] : q, b, p.mass[q], p.x[q], p.v[q], p.C[q]});
+    }
+    if (keys) {
+      global::concatenate(s);
+      std::sort(s.begin(), s.end(), [](const Sample& a, const Sample& b) { return a.key < b.key; });
+    }
+    return s;
+  }
+
   std::vector<int> body_of_;  // per material: index of its body in `bodies`, -1 if not rigid
 };
 

@@ -40,7 +40,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
   rigid.init(s, materials, particles, grid.dx);
 #ifdef CDMPM_MPI
-  if (mpi::active() && distributable(s).empty()) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
+  if (mpi::active() && distributable(s).empty()) make_domain();
 #endif
   crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
@@ -82,10 +82,23 @@ void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_refer
 #ifdef CDMPM_MPI
   // The loaded particles (every rank read the whole checkpoint) are the one-process array: partitioned again, each
   // rank keeping its own, their keys their order.
-  if (domain_) domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size);
+  if (domain_) make_domain();
 #endif
   update_speeds();
 }
+
+#ifdef CDMPM_MPI
+// Partitions the particles (all of the scene on every rank) and keeps this rank's, with the blocks of the
+// boundaries' mirror pairs kept on one rank (parallel/partition.h).
+template <int dim>
+void Simulation<dim>::make_domain() {
+  std::vector<std::array<size_t, 2>> joined;
+  for (const auto& b : boundaries)
+    for (const auto& [i, j] : b->mirror_node_pairs(grid))
+      joined.push_back({grid.block_index(grid.block_of(i)), grid.block_index(grid.block_of(j))});
+  domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size, joined);
+}
+#endif
 
 template <int dim>
 void Simulation<dim>::with_whole_state(const std::function<void()>& f) {
@@ -153,10 +166,14 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] { advect_phase(dt); });
   timer_.run(Phase::Sinks, [&] {
-    remove_sunk_particles(particles, sinks);
 #ifdef CDMPM_MPI
-    if (domain_) domain_->migrate_particles(particles, grid);
+    if (domain_) {
+      std::vector<uint32_t> kept;
+      if (remove_sunk_particles(particles, sinks, &kept)) domain_->removed(kept);
+      return domain_->migrate_particles(particles, grid);
+    }
 #endif
+    remove_sunk_particles(particles, sinks);
   });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
@@ -216,6 +233,9 @@ void Simulation<dim>::boundary_unfold() {
 
 template <int dim>
 void Simulation<dim>::rigid_projection(Real dt) {
+#ifdef CDMPM_MPI
+  if (domain_) return rigid.project(particles, time_, dt, grid.dx, &domain_->keys());
+#endif
   rigid.project(particles, time_, dt, grid.dx);
 }
 

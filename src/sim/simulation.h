@@ -98,6 +98,9 @@ class Simulation {
   void advect_phase(Real dt);
   void update_speeds();
   void settle_elastically(double duration, Real damping);
+#ifdef CDMPM_MPI
+  void make_domain();
+#endif
 
   double time_ = 0;
   long long steps_ = 0;

@@ -104,6 +104,28 @@ void check_mirror_zone(const Vec<dim>& size, Real dx) {
 TEST(Partition, MirrorZoneHoldsEveryFoldChain2D) { check_mirror_zone<2>(Vec<2>(1.0, 0.6), 0.02); }
 TEST(Partition, MirrorZoneHoldsEveryFoldChain3D) { check_mirror_zone<3>(Vec<3>(0.6, 0.3, 0.4), 0.05); }
 
+// Pairs of blocks kept together (keep_together: the mirror pairs of static slip boxes) have one owner, for
+// partitions into many ranks.
+TEST(Partition, KeptTogetherBlocksShareTheirOwner) {
+  const Grid<2> g(Vec<2>(1.0, 0.6), Real(0.02));
+  std::vector<uint8_t> allowed = every_cut(g.block_count());
+  std::vector<uint32_t> blocks;
+  std::vector<uint64_t> counts;
+  random_counts(g, 11, blocks, counts);
+  std::mt19937 rng(3);
+  std::vector<std::pair<size_t, size_t>> pairs;  // a block and one a block row (n_blocks[1]) or one block further
+  for (int k = 0; k < 20; ++k) {
+    const size_t a = rng() % (g.block_count() - g.n_blocks[1]);
+    const size_t b = a + (k % 2 ? 1 : g.n_blocks[1]);
+    pairs.push_back(k % 4 < 2 ? std::pair{a, b} : std::pair{b, a});
+    keep_together(allowed, a, b);
+  }
+  for (int ranks : {2, 5, 16, 64}) {
+    const BlockPartition p = balanced_partition(blocks, counts, ranks, g.block_count(), allowed);
+    for (const auto& [a, b] : pairs) ASSERT_EQ(p.owner(a), p.owner(b)) << "blocks " << a << ", " << b << ", " << ranks << " ranks";
+  }
+}
+
 TEST(Partition, Imbalance) {
   EXPECT_DOUBLE_EQ(imbalance({10, 10, 10}), 1.0);
   EXPECT_DOUBLE_EQ(imbalance({30, 0, 0}), 3.0);
