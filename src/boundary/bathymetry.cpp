@@ -6,8 +6,8 @@
 // "file_origin" (the point of the file that becomes the domain's origin, default zeros); "well_balanced" (bool,
 // default true with the slip condition, which it needs): the water bodies fill a layer of the solid below the bed
 // with fixed water particles (sim/bed_layer.h), and a particle that ends a step below the bed is put back on it
-// (straight up) and loses the part of its velocity into the bed, v <- v - min(0, v.n) n (n the bed's unit normal):
-// the impermeable slip condition on the particle, as grid_update applies it on the nodes. Without it a particle
+// (straight up) and loses the part of its velocity into the bed, v <- v - min(0, v.n) n (n the bed's unit normal;
+// the separating condition of boundary.h, apply_condition): the bed stays impermeable to the particle. Without it a particle
 // running up a slope kept the velocity that had taken it into the bed, was lifted for free, and climbed with the
 // horizontal speed of the flat: a solitary wave's run-up on a 1:2.5 beach was 0.327 h, against 0.295 h with it and
 // 0.279 h from Synolakis's exact linear theory (docs/validation.md#solitary-wave-run-up).
@@ -89,8 +89,7 @@ class Bathymetry2D final : public Boundary<2> {
     const Real h = height(x[0], slope);
     if (x[1] >= h) return;
     x[1] = h;
-    const Vec<2> n = Vec<2>(-slope, 1).normalized();
-    v -= std::min(Real(0), v.dot(n)) * n;
+    apply_condition<2>(BoundaryCondition::Separate, 0, Vec<2>(-slope, 1).normalized(), v);
   }
 
  private:
@@ -160,8 +159,7 @@ class HeightField3D final : public Boundary<3> {
     const Real h = static_cast<Real>(height(x, dhdx, dhdy));
     if (x[2] >= h) return;
     x[2] = h;
-    const Vec<3> n = Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized();
-    v -= std::min(Real(0), v.dot(n)) * n;
+    apply_condition<3>(BoundaryCondition::Separate, 0, Vec<3>(Real(-dhdx), Real(-dhdy), 1).normalized(), v);
   }
 
  private:
