@@ -22,6 +22,8 @@ template <>
 MPI_Datatype type_of<double>() { return MPI_DOUBLE; }
 template <>
 MPI_Datatype type_of<float>() { return MPI_FLOAT; }
+template <>
+MPI_Datatype type_of<int64_t>() { return MPI_INT64_T; }
 
 template <class T>
 void reduce(T* values, size_t n, MPI_Op op) {
@@ -92,6 +94,7 @@ void sum(double* v, size_t n) { sum_in_rank_order(v, n); }
 void max(float* v, size_t n) { reduce(v, n, MPI_MAX); }
 void min(float* v, size_t n) { reduce(v, n, MPI_MIN); }
 void sum(float* v, size_t n) { sum_in_rank_order(v, n); }
+void sum(int64_t* v, size_t n) { reduce(v, n, MPI_SUM); }
 
 std::vector<Bytes> exchange(const std::vector<Bytes>& send) {
   const int p = size();

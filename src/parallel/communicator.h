@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,8 @@ void sum(double* values, size_t n);
 void max(float* values, size_t n);
 void min(float* values, size_t n);
 void sum(float* values, size_t n);
+// Integers: exact in any order.
+void sum(int64_t* values, size_t n);
 
 // Sends send[r] to rank r (send has size() entries; empty buffers are sent as nothing) and returns what every rank
 // sent to this one, indexed by the sender's rank.

@@ -6,15 +6,18 @@
 // One process (the default build): every function is the identity. The MPI build (-DCDMPM_MPI=ON,
 // parallel/communicator.h) makes them collective: max/min are exact in any order; sums are combined in rank order
 // of a partition that follows the global block order (parallel/partition.h), so a result does not depend on how
-// the work was split within a rank (output-only sums may still differ from one process's in the last bits, as
-// across thread counts; the written outputs are therefore evaluated on the gathered state, docs/architecture.md).
+// the work was split within a rank. Sums that must have the bits of one process whatever the split (the probes'
+// and energies' sums over particles) are exact instead: each rank and thread accumulates an ExactSum
+// (math/exact_sum.h) and global::sum adds the accumulators' integer chunks, exact in any order.
 // Every rank must call the same reductions in the same order.
 // Not routed through it yet: iceberg detection (probe/icebergs.h), which needs every ice cell of the domain, a
-// gather rather than a reduction (refused in a distributed run).
+// gather rather than a reduction (evaluated on the gathered state, Simulation::with_whole_state).
 #pragma once
 
 #include <type_traits>
 #include <vector>
+
+#include "math/exact_sum.h"
 
 #ifdef CDMPM_MPI
 #include "parallel/communicator.h"
@@ -34,6 +37,8 @@ template <class T>
 void min(std::vector<T>&) {}
 template <class T>
 void concatenate(std::vector<T>&) {}
+// Every accumulator's total over the processes (in place).
+inline void sum(std::vector<ExactSum>&) {}
 #else
 namespace detail {
 // The scalar of T (T itself, or the Scalar of a fixed-size Eigen type) and how many T holds.
@@ -66,6 +71,25 @@ void max(std::vector<T>& v) {
 template <class T>
 void min(std::vector<T>& v) {
   detail::apply(v, [](auto* p, size_t n) { mpi::min(p, n); });
+}
+// Every accumulator's total over the processes (in place): the chunks and the counts of infinite and NaN terms
+// added as integers, exact in any order.
+inline void sum(std::vector<ExactSum>& v) {
+  constexpr size_t kWords = ExactSum::kChunks + 3;
+  std::vector<int64_t> words(v.size() * kWords);
+  for (size_t i = 0; i < v.size(); ++i) {
+    v[i].normalize();
+    std::copy(v[i].chunks().begin(), v[i].chunks().end(), words.begin() + i * kWords);
+    for (int f = 0; f < 3; ++f) words[i * kWords + ExactSum::kChunks + f] = (v[i].flags() >> f) & 1;
+  }
+  mpi::sum(words.data(), words.size());
+  for (size_t i = 0; i < v.size(); ++i) {
+    std::copy(words.begin() + i * kWords, words.begin() + i * kWords + ExactSum::kChunks, v[i].chunks().begin());
+    uint8_t flags = 0;
+    for (int f = 0; f < 3; ++f) flags |= uint8_t(words[i * kWords + ExactSum::kChunks + f] > 0) << f;
+    v[i].set_flags(flags);
+    v[i].normalize();
+  }
 }
 // Every rank's items, concatenated in rank order, on every rank (plain records copied as bytes: numbers, enums
 // and fixed-size Eigen vectors).

@@ -1,5 +1,6 @@
 // energy.h - totals over particles: mass, kinetic energy sum 1/2 m |v|^2, gravitational energy
-// sum -m g.x (zero at the origin), and stored elastic energy sum V0 psi (material/stress.h).
+// sum -m g.x (zero at the origin), and stored elastic energy sum V0 psi (material/stress.h). Exact sums
+// (math/exact_sum.h): the same bits for any number of threads and processes.
 #pragma once
 
 #include "core/particles.h"
@@ -17,17 +18,15 @@ struct EnergyTotals {
 template <int dim>
 EnergyTotals energy_totals(const Particles<dim>& p, const std::vector<Material>& materials, const Vec<dim>& gravity,
                            int material_index = -1) {
-  double m = 0, ke = 0, ge = 0, ee = 0;
-  const size_t n = p.size();
-#pragma omp parallel for schedule(static) reduction(+ : m, ke, ge, ee)
-  for (size_t q = 0; q < n; ++q) {
-    if (material_index >= 0 && p.material[q] != material_index) continue;
-    m += p.mass[q];
-    ke += 0.5 * p.mass[q] * p.v[q].squaredNorm();
-    ge -= p.mass[q] * gravity.dot(p.x[q]);
-    ee += particle_elastic_energy(materials[p.material[q]], p, q);
-  }
-  return {global::sum(m), global::sum(ke), global::sum(ge), global::sum(ee)};
+  std::vector<ExactSum> s = exact_sums(4, p.size(), [&](size_t q, ExactSum* acc) {
+    if (material_index >= 0 && p.material[q] != material_index) return;
+    acc[0].add(p.mass[q]);
+    acc[1].add(0.5 * p.mass[q] * p.v[q].squaredNorm());
+    acc[2].add(-(p.mass[q] * gravity.dot(p.x[q])));
+    acc[3].add(particle_elastic_energy(materials[p.material[q]], p, q));
+  });
+  global::sum(s);
+  return {s[0].value(), s[1].value(), s[2].value(), s[3].value()};
 }
 
 }  // namespace cdmpm

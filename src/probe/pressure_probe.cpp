@@ -1,6 +1,7 @@
 // pressure_probe.cpp - the "pressure" probe: the B-spline weighted average of particle pressures around a point
 // (kernel width 3 dx), p(x) = sum_p N(x_p - x) p_p / sum_p N(x_p - x); zero where no particle is near.
-// Scene key: position (dim coordinates).
+// Scene key: position (dim coordinates). The sums are exact (math/exact_sum.h): the same bits for any number of
+// threads and processes.
 #include "core/bspline.h"
 #include "material/stress.h"
 #include "parallel/reduction.h"
@@ -21,20 +22,18 @@ class PressureProbe final : public Probe<dim> {
   void sample(const Simulation<dim>& sim, std::vector<double>& out) const override {
     const auto& P = sim.particles;
     const size_t n = P.size();
-    double sw = 0, swp = 0;
-#pragma omp parallel for schedule(static) reduction(+ : sw, swp)
-    for (size_t q = 0; q < n; ++q) {
+    std::vector<ExactSum> s = exact_sums(2, n, [&](size_t q, ExactSum* acc) {
       const Material& m = sim.materials[P.material[q]];
-      if (!this->selected(m, P.material[q])) continue;
+      if (!this->selected(m, P.material[q])) return;
       Real w = 1;
       for (int a = 0; a < dim && w > 0; ++a) w *= bspline_kernel((P.x[q][a] - x_[a]) * sim.grid.inv_dx);
       if (w > 0) {
-        sw += w;
-        swp += w * particle_pressure(m, P, q);
+        acc[0].add(w);
+        acc[1].add(w * particle_pressure(m, P, q));
       }
-    }
-    sw = global::sum(sw);
-    swp = global::sum(swp);
+    });
+    global::sum(s);
+    const double sw = s[0].value(), swp = s[1].value();
     out.push_back(sw > 0 ? swp / sw : 0.0);
   }
 

@@ -139,11 +139,15 @@ class Section final : public Probe<dim> {
     const std::vector<std::vector<uint32_t>> lists = station_lists(P, near, 1.5 * dx * (1 + 1e-6));
 
     std::vector<Column> out(stations_.size());
+    // Per station: the exact sums (math/exact_sum.h) of N m and of N m v, the same bits for any split of the
+    // particles over processes.
+    std::vector<ExactSum> sums(stations_.size() * (1 + H));
     const long ns = static_cast<long>(stations_.size());
 #pragma omp parallel for schedule(dynamic)
     for (long k = 0; k < ns; ++k) {
       const Point& X = stations_[k];
       Column& c = out[k];
+      ExactSum* s = &sums[k * (1 + H)];
       for (const uint32_t q : lists[k]) {
         double w = 1;
         bool column = true;
@@ -154,8 +158,8 @@ class Section final : public Probe<dim> {
         }
         if (w > 0) {
           const double wm = w * P.mass[q];
-          c.sw += wm;
-          for (int a = 0; a < H; ++a) c.swv[a] += wm * P.v[q][a];
+          s[0].add(wm);
+          for (int a = 0; a < H; ++a) s[1 + a].add(wm * P.v[q][a]);
         }
         if (column) {
           const double y = P.x[q][H], hs = sim.materials[P.material[q]].half_spacing;
@@ -164,9 +168,11 @@ class Section final : public Probe<dim> {
         }
       }
     }
-    for (Column& c : out) {  // across processes, outside the threads
-      c.sw = global::sum(c.sw);
-      for (int a = 0; a < H; ++a) c.swv[a] = global::sum(c.swv[a]);
+    global::sum(sums);  // across processes, outside the threads
+    for (size_t k = 0; k < out.size(); ++k) {
+      Column& c = out[k];
+      c.sw = sums[k * (1 + H)].value();
+      for (int a = 0; a < H; ++a) c.swv[a] = sums[k * (1 + H) + 1 + a].value();
       c.top = global::max(c.top);
       c.bottom = global::min(c.bottom);
       if (c.sw > 0) c.u = c.swv / c.sw;

@@ -72,8 +72,6 @@ void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
   meta.wave_dt_at_start = sim_.wave_dt_at_start;
   meta.scene_fingerprint = scene_fingerprint(sim_.scene);
   csv_ << probes_.csv_header() << '\n';
-  write_probes();
-  write_frame();
 }
 
 template <int dim>
@@ -111,10 +109,13 @@ void RunFiles<dim>::resume() {
 
 template <int dim>
 void RunFiles<dim>::write_probes() {
-  csv_ << sim_.time();
-  for (double v : probes_.sample(sim_)) csv_ << ',' << v;
-  csv_ << '\n';
-  csv_.flush();
+  const std::vector<double> row = probes_.sample(sim_);  // on every rank: the probes' reductions are collective
+  sim_.on_root([&] {
+    csv_ << sim_.time();
+    for (double v : row) csv_ << ',' << v;
+    csv_ << '\n';
+    csv_.flush();
+  });
 }
 
 // The frame of index meta.frame_index (if the scene writes frames), listed in particles.pvd, and the bodies of

@@ -36,12 +36,14 @@ class RunFiles {
  public:
   RunFiles(const std::string& out_dir, Simulation<dim>& sim, Probes<dim>& probes, IcebergTracker<dim>& icebergs,
            HazardMap<dim>& hazard);
-  // Creates the output files (run.json records `command_line`) and writes the initial probe sample, frame and
-  // icebergs (the run then gives the hazard record its initial state, on every rank of a distributed run).
+  // Creates the output files (run.json records `command_line`) and probes.csv's header (rank 0 of a distributed
+  // run); the run then writes the initial probe sample and frame and gives the hazard record its initial state.
   void start(const std::vector<std::string>& command_line);
   // Loads the checkpoint into the simulation, probes, tracker and hazard record and reopens the files for appending.
   void resume();
 
+  // A probe sample: evaluated on every rank (the probes reduce over the ranks, exactly: math/exact_sum.h), written
+  // to probes.csv by rank 0.
   void write_probes();
   // The frame's list entry and particles.pvd (on the whole state), or with pieces only the list entry: the .pvtu
   // is written by write_frame_pieces.
@@ -49,6 +51,9 @@ class RunFiles {
   // With pieces, on every rank of a distributed run after write_frame: this rank's piece of the frame of index
   // meta.frame_index, and on rank 0 its .pvtu.
   void write_frame_pieces();
+  // Whether write_frame reads particles (a frame written whole, or the icebergs of a scene with breakable ice), so a
+  // distributed run must gather them to rank 0 for it.
+  bool frame_reads_particles() const { return (!pieces_ && sim_.scene.output.frames) || icebergs_.active(); }
   // Frames as one .pvtu of per-rank pieces and checkpoints as a manifest of per-rank pieces (a distributed run,
   // unless --gather-output) instead of one .vtu and one checkpoint file gathered on rank 0.
   void set_pieces(bool on) { pieces_ = on; }

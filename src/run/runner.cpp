@@ -27,14 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The totals of the whole state (rank 0 of a distributed run; zero elsewhere, where nothing is written).
-template <int dim>
-EnergyTotals whole_state_energy(Simulation<dim>& sim) {
-  EnergyTotals e;
-  sim.with_whole_state([&] { e = energy_totals(sim.particles, sim.materials, sim.gravity); });
-  return e;
-}
-
 // A time step that has collapsed below 1e-3 of the acoustic limit at the start means a blow-up.
 template <int dim>
 std::optional<std::string> collapsed(const Simulation<dim>& sim, Real dt) {
@@ -52,7 +44,7 @@ class TimeLoop {
       : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
         files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
-        e0_(whole_state_energy(sim_)), progress_(opt.progress, 0, scene.time.end) {}
+        e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
 
   RunResult run() {
 #ifdef CDMPM_MPI
@@ -60,8 +52,9 @@ class TimeLoop {
 #endif
     if (opt_.resume) resume();
     else {
-      sim_.with_whole_state([&] { files_.start(opt_.command_line); });
-      files_.write_frame_pieces();
+      sim_.on_root([&] { files_.start(opt_.command_line); });
+      files_.write_probes();
+      write_frame();
     }
     if (!opt_.resume) hazard_.init(sim_);
     times_.setup = elapsed();
@@ -127,8 +120,9 @@ class TimeLoop {
 
   void sample() {
     ++files_.meta.probe_index;
-    sim_.with_whole_state([&] {
-      files_.write_probes();
+    files_.write_probes();
+    if (!icebergs_.active()) return;
+    sim_.with_whole_state([&] {  // iceberg detection needs every ice particle (probe/icebergs.h)
       if (files_.sample_icebergs() && opt_.progress) {
         const auto& f = icebergs_.first_;
         std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
@@ -155,9 +149,15 @@ class TimeLoop {
   void frame() {
     ++files_.meta.frame_index;
     const int every = scene_.output.checkpoint_every;
-    sim_.with_whole_state([&] { files_.write_frame(); });
-    files_.write_frame_pieces();
+    write_frame();
     if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
+  }
+
+  // The frame of index meta.frame_index: on the gathered state where it reads particles, then every rank's piece.
+  void write_frame() {
+    if (files_.frame_reads_particles()) sim_.with_whole_state([&] { files_.write_frame(); });
+    else sim_.on_root([&] { files_.write_frame(); });
+    files_.write_frame_pieces();
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)

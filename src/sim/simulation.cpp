@@ -122,6 +122,18 @@ void Simulation<dim>::with_whole_state(const std::function<void()>& f) {
 }
 
 template <int dim>
+void Simulation<dim>::on_root(const std::function<void()>& f) {
+#ifdef CDMPM_MPI
+  if (domain_) {
+    if (mpi::rank() != 0) return;
+    const mpi::LocalScope local;
+    return f();
+  }
+#endif
+  f();
+}
+
+template <int dim>
 Real Simulation<dim>::stable_dt() const {
   return stable_time_step(scene.time, grid.dx, max_speed, max_wave_speed, material_dt_);
 }

@@ -65,6 +65,9 @@ class Simulation {
   // that order, with the reductions local (parallel/reduction.h). The outputs are written inside it, so they are
   // those of one process. Collective in a distributed run.
   void with_whole_state(const std::function<void()>& f);
+  // Calls f on rank 0 alone (directly in one process), with the reductions local and no gather: for outputs that
+  // read no particle (file bookkeeping). Not collective.
+  void on_root(const std::function<void()>& f);
 #ifdef CDMPM_MPI
   // This rank's part of a distributed run (null in one process or for a scene run undistributed).
   const Domain<dim>* domain() const { return domain_.get(); }
