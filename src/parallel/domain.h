@@ -93,7 +93,9 @@ class Domain {
   // The order keys of this rank's particles (their indices in the one-process array at the last sort), ascending.
   const std::vector<uint64_t>& keys() const { return keys_; }
 
-  Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
+  Particles<dim> gather(const Particles<dim>& p, bool solids_only = false) const {
+    return gather_particles(p, keys_, solids_only);
+  }
 
   // p2g with the halo exchanges (parallel/halo_exchange.h).
   void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,

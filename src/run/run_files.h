@@ -53,7 +53,8 @@ class RunFiles {
   void write_frame_pieces();
   // Whether write_frame reads particles (a frame written whole, or the icebergs of a scene with breakable ice), so a
   // distributed run must gather them to rank 0 for it.
-  bool frame_reads_particles() const { return (!pieces_ && sim_.scene.output.frames) || icebergs_.active(); }
+  bool frame_reads_particles() const { return frame_reads_water() || icebergs_.active(); }
+  bool frame_reads_water() const { return !pieces_ && sim_.scene.output.frames; }  // else the icebergs' ice only
   // Frames as one .pvtu of per-rank pieces and checkpoints as a manifest of per-rank pieces (a distributed run,
   // unless --gather-output) instead of one .vtu and one checkpoint file gathered on rank 0.
   void set_pieces(bool on) { pieces_ = on; }

@@ -122,13 +122,15 @@ class TimeLoop {
     ++files_.meta.probe_index;
     files_.write_probes();
     if (!icebergs_.active()) return;
-    sim_.with_whole_state([&] {  // iceberg detection needs every ice particle (probe/icebergs.h)
-      if (files_.sample_icebergs() && opt_.progress) {
-        const auto& f = icebergs_.first_;
-        std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
-                     f[0], f[1], f[2]);
-      }
-    });
+    sim_.with_whole_state(  // iceberg detection needs every ice particle (probe/icebergs.h), and only those
+        [&] {
+          if (files_.sample_icebergs() && opt_.progress) {
+            const auto& f = icebergs_.first_;
+            std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n",
+                         progress_.tty() ? "\n" : "", f[0], f[1], f[2]);
+          }
+        },
+        true);
     share_first_iceberg();
   }
 
@@ -155,7 +157,7 @@ class TimeLoop {
 
   // The frame of index meta.frame_index: on the gathered state where it reads particles, then every rank's piece.
   void write_frame() {
-    if (files_.frame_reads_particles()) sim_.with_whole_state([&] { files_.write_frame(); });
+    if (files_.frame_reads_particles()) sim_.with_whole_state([&] { files_.write_frame(); }, !files_.frame_reads_water());
     else sim_.on_root([&] { files_.write_frame(); });
     files_.write_frame_pieces();
   }

@@ -101,10 +101,10 @@ void Simulation<dim>::make_domain() {
 #endif
 
 template <int dim>
-void Simulation<dim>::with_whole_state(const std::function<void()>& f) {
+void Simulation<dim>::with_whole_state(const std::function<void()>& f, bool solids_only) {
 #ifdef CDMPM_MPI
   if (domain_) {
-    Particles<dim> whole = domain_->gather(particles);
+    Particles<dim> whole = domain_->gather(particles, solids_only);
     if (mpi::rank() != 0) return;
     std::swap(particles, whole);
     const mpi::LocalScope local;
