@@ -66,7 +66,7 @@ class Simulation {
   // those of one process. Collective in a distributed run.
   void with_whole_state(const std::function<void()>& f);
 #ifdef CDMPM_MPI
-  // This rank's part of a distributed run (null in one process or for a scene run undistributed).
+  // This rank's part of a distributed run (null in one process).
   const Domain<dim>* domain() const { return domain_.get(); }
 #endif
 
