@@ -122,8 +122,8 @@ int main(int argc, char** argv) {
                   "exceeds this at a particle sort (default 1.1; results do not depend on it)")
       ->check(CLI::Range(1.0, 1e9));
   run->add_flag("--gather-output", gather_output,
-                "Distributed run: write each frame as one .vtu gathered on rank 0, as one process does, instead of "
-                "per-rank pieces under a .pvtu");
+                "Distributed run: write each frame as one .vtu and the checkpoint as one file, gathered on rank 0, as "
+                "one process does, instead of per-rank pieces under a .pvtu and a checkpoint manifest");
 #endif
 
   std::vector<std::string> check_paths;

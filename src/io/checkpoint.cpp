@@ -1,7 +1,10 @@
 // checkpoint.cpp - writing and reading checkpoints (format in checkpoint.h, checks in checkpoint_format.h).
 #include "io/checkpoint.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <tuple>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -10,7 +13,9 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '9'};
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '9'};          // one file
+constexpr char kManifestMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', 'D'};  // a distributed run's manifest
+constexpr char kPieceMagic[8] = {'C', 'D', 'M', 'P', 'M', 'P', 'C', '1'};     // one rank's piece
 constexpr uint64_t kMaxString = 4096;  // longest string field (frame file names, fingerprint section names)
 
 // Writes and keeps the CRC-32 of everything written.
@@ -56,74 +61,62 @@ struct Reader {
   }
 };
 
-// The file's size after checking that it is a checkpoint of this format with an intact CRC-32.
-uint64_t check_file(std::ifstream& is, const std::string& path) {
+// The file's size after checking that it starts with `magic` (the format named by its first 7 characters, the
+// version by the 8th) and has an intact CRC-32.
+uint64_t check_file(std::ifstream& is, const std::string& path, const char (&magic)[8], const char* what,
+                    uint32_t* crc = nullptr) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw CheckpointError(path + ": no checkpoint to resume from");
+  if (!std::filesystem::is_regular_file(path, ec)) throw CheckpointError(path + ": no " + what + " to resume from");
   const uint64_t size = std::filesystem::file_size(path, ec);
-  char magic[8];
-  if (ec || size < sizeof magic + 4 || !is.read(magic, 8) || std::memcmp(magic, kMagic, 7) != 0)
-    throw CheckpointError(path + ": not a cdmpm checkpoint");
-  if (magic[7] != kMagic[7])
-    throw CheckpointError(path + ": checkpoint format CDMPMCK" + std::string(1, magic[7]) +
-                          " was written by another cdmpm version (this one reads CDMPMCK" + std::string(1, kMagic[7]) +
-                          ", which adds the hazard record); rerun the scene without --resume");
+  char read[8];
+  if (ec || size < sizeof read + 4 || !is.read(read, 8) || std::memcmp(read, magic, 7) != 0)
+    throw CheckpointError(path + ": not a cdmpm " + what);
+  if (read[7] != magic[7])
+    throw CheckpointError(path + ": " + what + " format " + std::string(magic, 7) + std::string(1, read[7]) +
+                          " was written by another cdmpm version (this one reads " + std::string(magic, 8) +
+                          "); rerun the scene without --resume");
   uint32_t stored = 0;
   std::ifstream tail(path, std::ios::binary);
   tail.seekg(static_cast<std::streamoff>(size - 4));
   if (!tail.read(reinterpret_cast<char*>(&stored), 4) || stored != file_crc32(path, size - 4))
-    throw CheckpointError(path + ": checkpoint is corrupt (checksum mismatch: the file was changed or cut short)");
+    throw CheckpointError(path + ": " + what + " is corrupt (checksum mismatch: the file was changed or cut short)");
+  if (crc) *crc = stored;
   return size;
 }
 
-}  // namespace
-
-template <int dim>
-void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& m) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    if (!os) throw std::runtime_error(path + ": cannot write checkpoint");
-    Writer w{os};
-    w.raw(kMagic, 8);
-    w.pod<int32_t>(dim);
-    w.pod<int32_t>(sizeof(Real));
-    w.pod<uint64_t>(p.size());
-    w.pod<uint64_t>(p.solid_count());
-    w.pod<uint64_t>(m.scene_fingerprint.size());
-    for (const auto& [section, hash] : m.scene_fingerprint) { w.str(section); w.pod(hash); }
-    w.pod(m.time); w.pod(m.steps); w.pod(m.frame_index); w.pod(m.probe_index); w.pod(m.wave_dt_at_start);
-    w.vec(m.probe_state);
-    w.pod<uint64_t>(m.frames.size());
-    for (const auto& [t, f] : m.frames) { w.pod(t); w.str(f); }
-    w.pod(m.probes_csv_bytes);
-    w.pod(m.icebergs_csv_bytes);
-    w.vec(m.first_iceberg);
-    w.vec(m.crack_starts);
-    w.vec(m.rigid_bodies);
-    w.vec(m.hazard);
-    p.for_each_array([&](auto& a) { w.vec(a); });
-    p.for_each_solid_array([&](auto& a) { w.vec(a); });
-    const uint32_t crc = w.crc;
-    os.write(reinterpret_cast<const char*>(&crc), sizeof crc);
-    if (!os.flush()) throw std::runtime_error(path + ": writing checkpoint failed");
-  }
-  std::filesystem::rename(tmp, path);
+// The header after the magic: dim, precision, particle and solid counts.
+void write_counts(Writer& w, int dim, uint64_t n, uint64_t ns) {
+  w.pod<int32_t>(dim);
+  w.pod<int32_t>(sizeof(Real));
+  w.pod(n);
+  w.pod(ns);
 }
-
-template <int dim>
-CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
-  std::ifstream is(path, std::ios::binary);
-  const uint64_t size = check_file(is, path);
-  Reader r{is, path, size - 8 - 4};
+void read_counts(Reader& r, int dim, uint64_t& n, uint64_t& ns) {
   int32_t d = 0, real = 0;
-  uint64_t n = 0, ns = 0;
   r.pod(d); r.pod(real); r.pod(n); r.pod(ns);
   if (d != dim)
-    throw CheckpointError(path + ": checkpoint is " + std::to_string(d) + "D, scene is " + std::to_string(dim) + "D");
+    throw CheckpointError(r.path + ": checkpoint is " + std::to_string(d) + "D, scene is " + std::to_string(dim) + "D");
   if (real != static_cast<int32_t>(sizeof(Real)))
-    throw CheckpointError(path + ": checkpoint was written with another floating-point precision");
+    throw CheckpointError(r.path + ": checkpoint was written with another floating-point precision");
   if (ns > n) r.corrupt("more solid particles than particles");
+}
+
+// The bookkeeping, from the fingerprint to the hazard record.
+void write_meta(Writer& w, const CheckpointMeta& m) {
+  w.pod<uint64_t>(m.scene_fingerprint.size());
+  for (const auto& [section, hash] : m.scene_fingerprint) { w.str(section); w.pod(hash); }
+  w.pod(m.time); w.pod(m.steps); w.pod(m.frame_index); w.pod(m.probe_index); w.pod(m.wave_dt_at_start);
+  w.vec(m.probe_state);
+  w.pod<uint64_t>(m.frames.size());
+  for (const auto& [t, f] : m.frames) { w.pod(t); w.str(f); }
+  w.pod(m.probes_csv_bytes);
+  w.pod(m.icebergs_csv_bytes);
+  w.vec(m.first_iceberg);
+  w.vec(m.crack_starts);
+  w.vec(m.rigid_bodies);
+  w.vec(m.hazard);
+}
+CheckpointMeta read_meta(Reader& r) {
   CheckpointMeta m;
   m.scene_fingerprint.resize(r.length(8 + 8, UINT64_MAX, "scene fingerprint"));
   for (auto& [section, hash] : m.scene_fingerprint) { r.str(section); r.pod(hash); }
@@ -137,6 +130,16 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   r.vec(m.crack_starts, "crack starts");
   r.vec(m.rigid_bodies, "rigid bodies");
   r.vec(m.hazard, "hazard record");
+  return m;
+}
+
+template <int dim>
+void write_arrays(Writer& w, Particles<dim>& p) {
+  p.for_each_array([&](auto& a) { w.vec(a); });
+  p.for_each_solid_array([&](auto& a) { w.vec(a); });
+}
+template <int dim>
+void read_arrays(Reader& r, Particles<dim>& p, uint64_t n, uint64_t ns) {
   auto read_arrays_of = [&](uint64_t count) {
     return [&, count](auto& a) {
       using T = typename std::decay_t<decltype(a)>::value_type;
@@ -147,12 +150,164 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
   };
   p.for_each_array(read_arrays_of(n));
   p.for_each_solid_array(read_arrays_of(ns));
+}
+
+// Writes `body` between the magic and the CRC to path.tmp, renames it to path, and returns the file's size and CRC.
+template <class Body>
+std::pair<uint64_t, uint32_t> write_file(const std::string& path, const char (&magic)[8], Body&& body) {
+  const std::string tmp = path + ".tmp";
+  uint64_t bytes = 0;
+  uint32_t crc = 0;
+  {
+    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+    if (!os) throw std::runtime_error(path + ": cannot write checkpoint");
+    Writer w{os};
+    w.raw(magic, 8);
+    body(w);
+    crc = w.crc;
+    os.write(reinterpret_cast<const char*>(&crc), sizeof crc);
+    if (!os.flush()) throw std::runtime_error(path + ": writing checkpoint failed");
+    bytes = static_cast<uint64_t>(os.tellp());
+  }
+  std::filesystem::rename(tmp, path);
+  return {bytes, crc};
+}
+
+// checkpoint_S_rR.bin, S a or b, R a rank: a name in the manifest's folder (no path).
+bool is_piece_name(const std::string& f) {
+  const std::string prefix = "checkpoint_", suffix = ".bin";
+  if (f.size() <= prefix.size() + 3 + suffix.size() || !f.starts_with(prefix) || !f.ends_with(suffix)) return false;
+  if ((f[11] != 'a' && f[11] != 'b') || f[12] != '_' || f[13] != 'r') return false;
+  const std::string rank = f.substr(14, f.size() - 14 - suffix.size());
+  return !rank.empty() && rank.size() < 10 && std::all_of(rank.begin(), rank.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// A piece the manifest names: its file in the manifest's folder, checked against the manifest's record, its
+// particles appended to `pieces` and their keys to `keys`.
+template <int dim>
+void read_piece(const std::string& manifest, const CheckpointPiece& rec, Particles<dim>& piece, std::vector<uint64_t>& keys) {
+  if (!is_piece_name(rec.file))
+    throw CheckpointError(manifest + ": checkpoint is corrupt (piece file name '" + rec.file +
+                          "', expected checkpoint_S_rR.bin with S a or b)");
+  const std::string path = (std::filesystem::path(manifest).parent_path() / rec.file).string();
+  std::ifstream is(path, std::ios::binary);
+  uint32_t crc = 0;
+  const uint64_t size = check_file(is, path, kPieceMagic, "checkpoint piece", &crc);
+  if (size != rec.bytes || crc != rec.crc)
+    throw CheckpointError(path + ": checkpoint piece is not the one " + manifest +
+                          " names (another checkpoint's piece: its size or checksum differs)");
+  Reader r{is, path, size - 8 - 4};
+  uint64_t n = 0, ns = 0;
+  read_counts(r, dim, n, ns);
+  if (n != rec.n || ns != rec.ns) r.corrupt("particle counts differ from the manifest's");
+  r.vec(keys, "order keys");
+  if (keys.size() != n) r.corrupt("a key per particle expected");
+  if (!std::is_sorted(keys.begin(), keys.end(), std::less_equal<>())) r.corrupt("order keys not strictly ascending");
+  read_arrays(r, piece, n, ns);
   if (r.left != 0) r.corrupt(std::to_string(r.left) + " bytes after the last array");
+}
+
+// The pieces merged into one array in key order (the one-process array; every solid key is below every fluid key).
+template <int dim>
+void merge_pieces(const std::string& manifest, const std::vector<CheckpointPiece>& recs, Particles<dim>& p) {
+  std::vector<Particles<dim>> pieces(recs.size());
+  std::vector<std::vector<uint64_t>> keys(recs.size());
+  struct Entry { uint64_t key; uint32_t piece, q; };
+  std::vector<Entry> order;
+  for (size_t k = 0; k < recs.size(); ++k) {
+    read_piece(manifest, recs[k], pieces[k], keys[k]);
+    for (size_t q = 0; q < keys[k].size(); ++q) order.push_back({keys[k][q], uint32_t(k), uint32_t(q)});
+  }
+  std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+  Particles<dim> out;
+  out.next_id = p.next_id;
+  for (size_t i = 0; i < order.size(); ++i) {
+    const Entry& e = order[i];
+    if (i > 0 && order[i - 1].key == e.key)
+      throw CheckpointError(manifest + ": checkpoint is corrupt (two pieces hold a particle of key " + std::to_string(e.key) + ")");
+    const Particles<dim>& s = pieces[e.piece];
+    const bool solid = e.q < s.solid_count();
+    if (solid && out.size() > out.solid_count())
+      throw CheckpointError(manifest + ": checkpoint is corrupt (a solid's key after a fluid's)");
+    if (solid) out.add_solid(s.x[e.q], s.v[e.q], s.mass[e.q], s.J[e.q], s.material[e.q], s.C[e.q], s.F[e.q], s.alpha[e.q]);
+    else out.add_fluid(s.x[e.q], s.v[e.q], s.mass[e.q], s.J[e.q], s.material[e.q], s.C[e.q]);
+    out.id[solid ? out.solid_count() - 1 : out.size() - 1] = s.id[e.q];
+  }
+  out.next_id = p.next_id;
+  p = std::move(out);
+}
+
+}  // namespace
+
+template <int dim>
+void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& m) {
+  write_file(path, kMagic, [&](Writer& w) {
+    write_counts(w, dim, p.size(), p.solid_count());
+    write_meta(w, m);
+    write_arrays(w, p);
+  });
+}
+
+template <int dim>
+CheckpointPiece write_checkpoint_piece(const std::string& path, Particles<dim>& p, const std::vector<uint64_t>& keys) {
+  CheckpointPiece rec{std::filesystem::path(path).filename().string(), p.size(), p.solid_count(), 0, 0};
+  std::tie(rec.bytes, rec.crc) = write_file(path, kPieceMagic, [&](Writer& w) {
+    write_counts(w, dim, p.size(), p.solid_count());
+    w.vec(keys);
+    write_arrays(w, p);
+  });
+  return rec;
+}
+
+void write_checkpoint_manifest(const std::string& path, int dim, const CheckpointMeta& m) {
+  uint64_t n = 0, ns = 0;
+  for (const CheckpointPiece& piece : m.pieces) n += piece.n, ns += piece.ns;
+  write_file(path, kManifestMagic, [&](Writer& w) {
+    write_counts(w, dim, n, ns);
+    write_meta(w, m);
+    w.pod<uint64_t>(m.pieces.size());
+    for (const CheckpointPiece& piece : m.pieces) {
+      w.str(piece.file);
+      w.pod(piece.n); w.pod(piece.ns); w.pod(piece.bytes); w.pod(piece.crc);
+    }
+  });
+}
+
+template <int dim>
+CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
+  std::ifstream is(path, std::ios::binary);
+  char magic[8] = {};
+  is.read(magic, 8);
+  const bool manifest = is && std::memcmp(magic, kManifestMagic, 8) == 0;
+  is.seekg(0);
+  is.clear();
+  const uint64_t size = check_file(is, path, manifest ? kManifestMagic : kMagic, "checkpoint");
+  Reader r{is, path, size - 8 - 4};
+  uint64_t n = 0, ns = 0;
+  read_counts(r, dim, n, ns);
+  CheckpointMeta m = read_meta(r);
+  if (!manifest) {
+    read_arrays(r, p, n, ns);
+  } else {
+    m.pieces.resize(r.length(8 + 8 * 4 + 4, 1u << 24, "piece list"));
+    uint64_t total = 0, solids = 0;
+    for (CheckpointPiece& piece : m.pieces) {
+      r.str(piece.file);
+      r.pod(piece.n); r.pod(piece.ns); r.pod(piece.bytes); r.pod(piece.crc);
+      if (piece.ns > piece.n) r.corrupt("a piece with more solid particles than particles");
+      total += piece.n, solids += piece.ns;
+    }
+    if (total != n || solids != ns) r.corrupt("the pieces' particle counts do not add up to the manifest's");
+  }
+  if (r.left != 0) r.corrupt(std::to_string(r.left) + " bytes after the last field");
+  if (manifest) merge_pieces(path, m.pieces, p);
   return m;
 }
 
 template void write_checkpoint<2>(const std::string&, Particles<2>&, const CheckpointMeta&);
 template void write_checkpoint<3>(const std::string&, Particles<3>&, const CheckpointMeta&);
+template CheckpointPiece write_checkpoint_piece<2>(const std::string&, Particles<2>&, const std::vector<uint64_t>&);
+template CheckpointPiece write_checkpoint_piece<3>(const std::string&, Particles<3>&, const std::vector<uint64_t>&);
 template CheckpointMeta read_checkpoint<2>(const std::string&, Particles<2>&);
 template CheckpointMeta read_checkpoint<3>(const std::string&, Particles<3>&);
 

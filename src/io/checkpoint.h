@@ -1,6 +1,7 @@
-// checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume.
+// checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume: one file
+// (one process, or a distributed run with --gather-output) or a manifest and one piece per rank (a distributed run).
 //
-// Layout (format CDMPMCK9, native byte order; a "length" is a uint64 element count, a string is a length and
+// One file (format CDMPMCK9, native byte order; a "length" is a uint64 element count, a string is a length and
 // its bytes):
 //   magic "CDMPMCK9" | int32 dim | int32 sizeof(Real) | uint64 particle count n | uint64 solid count ns
 //   | fingerprint: length, then per entry (string section, uint64 hash) (io/scene_fingerprint.h)
@@ -12,8 +13,18 @@
 //   | every per-particle array as length + raw elements (Particles::for_each_array order: id x v C mass J material)
 //   | the solid-only arrays F and alpha likewise (the solids are particles 0 .. ns - 1)
 //   | uint32 CRC-32 of every byte before it.
-// Reading checks the magic, then the CRC over the whole file, then every length against the bytes left
-// before allocating (checkpoint_format.h); older formats (CDMPMCK2..8; CK6 had no particle ids, CK7 no hazard record, CK8 no crack-start record) are refused with a message saying so.
+// Per rank (format CDMPMCKD): the manifest checkpoint.bin has the same fields up to the hazard record (n and ns
+// the totals over the pieces), then, instead of the arrays, the pieces: length, then per piece (string file name,
+// uint64 n, uint64 ns, uint64 file size, uint32 the piece's CRC-32) | uint32 CRC-32. Each piece
+// (checkpoint_S_rR.bin: S the slot a or b, R the rank) is
+//   magic "CDMPMPC1" | int32 dim | int32 sizeof(Real) | uint64 n | uint64 ns | the particles' order keys (length +
+//   uint64, ascending: their indices in the one-process array, parallel/migration.h) | the arrays as above | CRC-32.
+// Reading merges the pieces by key into the one-process array, so a checkpoint resumes on any number of ranks
+// (and in one process) with the bits of one file. The two slots alternate: the new pieces are written while the
+// manifest still names the previous slot's, then the manifest is replaced, then the previous slot is removed.
+// Reading checks the magic, then the CRC over the whole file (and each piece's against the manifest and its own),
+// then every length against the bytes left before allocating (checkpoint_format.h); older formats (CDMPMCK2..8;
+// CK6 had no particle ids, CK7 no hazard record, CK8 no crack-start record) are refused with a message saying so.
 // Written to a temporary file and renamed, so the previous checkpoint stays valid until the new one is
 // complete. A resumed run continues bit for bit: the grid, particle bins and speeds are all recomputed from
 // the particle state.
@@ -27,6 +38,13 @@
 #include "core/particles.h"
 
 namespace cdmpm {
+
+// One rank's piece of a distributed checkpoint, as the manifest records it.
+struct CheckpointPiece {
+  std::string file;  // name in the checkpoint's folder (checkpoint_S_rR.bin)
+  uint64_t n = 0, ns = 0, bytes = 0;
+  uint32_t crc = 0;
+};
 
 struct CheckpointMeta {
   double time = 0;
@@ -43,12 +61,22 @@ struct CheckpointMeta {
   std::vector<double> rigid_bodies;                     // RigidBodies::save() (empty: no rigid body)
   std::vector<double> hazard;                           // HazardMap::save_state() (empty: no hazard record)
   std::vector<std::pair<std::string, uint64_t>> scene_fingerprint;  // io/scene_fingerprint.h
+  std::vector<CheckpointPiece> pieces;  // a distributed run's per-rank pieces (empty: the particles are in the file)
 };
 
+// One file (meta.pieces empty) with every particle.
 template <int dim>
 void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& meta);
-// Throws CheckpointError (io/checkpoint_format.h) naming the file if it is missing, corrupt (checksum, a
-// length past the end of the file), of another format version or of another dim/precision. The values are
+// A distributed run: this rank's piece (`keys` ascending, one per particle), written to `path` (a slot the manifest
+// does not name), and the manifest naming every rank's piece (meta.pieces), written under a temporary name and
+// renamed.
+template <int dim>
+CheckpointPiece write_checkpoint_piece(const std::string& path, Particles<dim>& p, const std::vector<uint64_t>& keys);
+void write_checkpoint_manifest(const std::string& path, int dim, const CheckpointMeta& meta);
+// Reads a file or a manifest and its pieces (merged by key: the one-process array). Throws CheckpointError
+// (io/checkpoint_format.h) naming the file if it (or a piece) is missing, corrupt (checksum, a length past the end
+// of the file, a piece that is not the one the manifest names, keys not distinct), of another format version or
+// of another dim/precision. The values are
 // checked separately by validate_checkpoint.
 template <int dim>
 CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p);

@@ -17,6 +17,8 @@ bool is_run_output_file(const std::string& name) {
       "hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
       "inundation_depth.asc", "crevasses.csv", "crack_starts.csv"};
   if (std::find(kFixed.begin(), kFixed.end(), name) != kFixed.end()) return true;
+  // A distributed run's checkpoint pieces (checkpoint_S_rR.bin, io/checkpoint.h), and their temporary names.
+  if (name.starts_with("checkpoint_") && (name.ends_with(".bin") || name.ends_with(".bin.tmp"))) return true;
   const std::string_view prefix = "particles_";
   for (const std::string_view suffix : {".vtu", ".pvtu"})  // frames, and a distributed run's pieces (_rR.vtu)
     if (name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) && name.ends_with(suffix)) return true;

@@ -84,6 +84,7 @@ void RunFiles<dim>::resume() {
   const auto seeded = static_cast<size_t>(global::sum(double(sim_.particles.size())));
   const auto seeded_solids = static_cast<size_t>(global::sum(double(sim_.particles.solid_count())));
   meta = read_checkpoint(ckpt, sim_.particles);
+  slot_ = meta.pieces.empty() ? 0 : meta.pieces.front().file[11];  // checkpoint_S_rR.bin
   validate_checkpoint(ckpt, meta, sim_.particles, sim_.scene);
   // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
   const bool fewer_allowed = !sim_.sinks.empty();
@@ -150,8 +151,9 @@ void RunFiles<dim>::write_frame_pieces() {
   write_frame_piece(path(pieces[me]).string(), sim_, me == 0 ? path(pvtu).string() : std::string(), pieces);
 }
 
+// The bookkeeping a checkpoint records (on the whole state: rank 0 of a distributed run), and crack_starts.csv.
 template <int dim>
-void RunFiles<dim>::checkpoint() {
+void RunFiles<dim>::update_meta() {
   meta.time = sim_.time();
   meta.steps = sim_.steps();
   meta.probes_csv_bytes = static_cast<uint64_t>(fs::file_size(path("probes.csv")));
@@ -162,7 +164,61 @@ void RunFiles<dim>::checkpoint() {
   meta.rigid_bodies = sim_.rigid.save();
   meta.probe_state = probes_.save_state();
   meta.hazard = hazard_.save_state();
-  write_checkpoint(path("checkpoint.bin").string(), sim_.particles, meta);
+  meta.pieces.clear();
+}
+
+template <int dim>
+void RunFiles<dim>::checkpoint() {
+  if (pieces_) return checkpoint_pieces();
+  sim_.with_whole_state([&] {
+    update_meta();
+    write_checkpoint(path("checkpoint.bin").string(), sim_.particles, meta);
+    remove_pieces(0);  // of a distributed run this one resumed
+  });
+  slot_ = 0;
+}
+
+// Removes the checkpoint pieces (checkpoint_S_rR.bin) of every slot but `keep`: those the manifest no longer names.
+template <int dim>
+void RunFiles<dim>::remove_pieces(char keep) const {
+  if (slot_ == 0) return;  // no pieces since this run started or resumed
+  std::vector<fs::path> old;
+  for (const auto& entry : fs::directory_iterator(out_)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("checkpoint_") && name.size() > 12 && name[11] != keep && name.ends_with(".bin"))
+      old.push_back(entry.path());
+  }
+  for (const auto& f : old) fs::remove(f);
+}
+
+// Every rank writes its particles to the slot the manifest does not name; once all have (the gather), rank 0
+// replaces the manifest and removes the previous slot's pieces (io/checkpoint.h).
+template <int dim>
+void RunFiles<dim>::checkpoint_pieces() {
+#ifdef CDMPM_MPI
+  const char slot = slot_ == 'a' ? 'b' : 'a';
+  auto piece_name = [&](char s, int r) { return "checkpoint_" + std::string(1, s) + "_r" + std::to_string(r) + ".bin"; };
+  const CheckpointPiece mine =
+      write_checkpoint_piece(path(piece_name(slot, mpi::rank())).string(), sim_.particles, sim_.domain()->keys());
+  mpi::Bytes b;
+  mpi::put(b, mine.n), mpi::put(b, mine.ns), mpi::put(b, mine.bytes), mpi::put(b, mine.crc);
+  const std::vector<mpi::Bytes> all = mpi::gather(b);
+  slot_ = slot;
+  if (mpi::rank() == 0) {
+    const mpi::LocalScope local;
+    update_meta();
+    for (size_t r = 0; r < all.size(); ++r) {
+      mpi::Reader read{all[r]};
+      CheckpointPiece& piece = meta.pieces.emplace_back();
+      piece.file = piece_name(slot, static_cast<int>(r));
+      piece.n = read.get<uint64_t>(), piece.ns = read.get<uint64_t>(), piece.bytes = read.get<uint64_t>();
+      piece.crc = read.get<uint32_t>();
+    }
+    write_checkpoint_manifest(path("checkpoint.bin").string(), dim, meta);
+    remove_pieces(slot);
+  }
+  mpi::barrier();
+#endif
 }
 
 template <int dim>

@@ -5,7 +5,10 @@
 //                           distributed run writing pieces (set_pieces): particles_NNNN_rR.vtu from every rank R
 //                           and particles_NNNN.pvtu joining them, which particles.pvd lists,
 //   checkpoint.bin          the state to resume from (io/checkpoint.h), with the sizes of the two CSV files at
-//                           that moment, so that a resumed run cuts them back to where the checkpoint was taken,
+//                           that moment, so that a resumed run cuts them back to where the checkpoint was taken;
+//                           a distributed run writing pieces: the manifest of checkpoint_S_rR.bin, every rank's
+//                           own particles (S the slot a or b, alternating, so the previous checkpoint stays whole
+//                           until the new one is),
 //   run.json                provenance: the scene file (absolute path), the --set values, the command line, the
 //                           version and git commit; `cdmpm run --resume DIR` reads the scene and --set values here,
 //   scene.resolved.json     the scene as loaded: --set values applied, parameters and expressions evaluated,
@@ -46,10 +49,13 @@ class RunFiles {
   // With pieces, on every rank of a distributed run after write_frame: this rank's piece of the frame of index
   // meta.frame_index, and on rank 0 its .pvtu.
   void write_frame_pieces();
-  // Frames as one .pvtu of per-rank pieces (a distributed run, unless --gather-output) instead of one .vtu.
+  // Frames as one .pvtu of per-rank pieces and checkpoints as a manifest of per-rank pieces (a distributed run,
+  // unless --gather-output) instead of one .vtu and one checkpoint file gathered on rank 0.
   void set_pieces(bool on) { pieces_ = on; }
   // Detection at a probe sample (the first iceberg); true if it was found just now.
   bool sample_icebergs() { return icebergs_.sample(bergs_, meta.frame_index); }
+  // On every rank (collective in a distributed run): checkpoint.bin, or with pieces every rank's piece and the
+  // manifest; and crack_starts.csv.
   void checkpoint();
   // Closes probes.csv (summary.json's wave report reads it) and writes crack_starts.csv.
   void close() {
@@ -65,6 +71,9 @@ class RunFiles {
   void write_provenance(const std::vector<std::string>& command_line) const;
   void write_crevasses() const;
   void write_crack_starts() const;
+  void update_meta();
+  void checkpoint_pieces();
+  void remove_pieces(char keep) const;
   std::filesystem::path out_;
   Simulation<dim>& sim_;
   Probes<dim>& probes_;
@@ -72,6 +81,7 @@ class RunFiles {
   HazardMap<dim>& hazard_;
   std::ofstream csv_, bergs_;
   bool pieces_ = false;
+  char slot_ = 0;  // the slot (a or b) of the pieces the manifest names (0: none yet)
 };
 
 }  // namespace cdmpm

@@ -85,7 +85,7 @@ class TimeLoop {
                        balance());
     }
     times_.loop_end = elapsed();  // before the final checkpoint, which can take long on a big scene
-    if (result.status != "unstable") sim_.with_whole_state([&] { files_.checkpoint(); });
+    if (result.status != "unstable") files_.checkpoint();
     progress_.update(sim_.steps(), sim_.time(), sim_.stable_dt(), sim_.particles.size(), times_.particle_steps, elapsed(), true,
                      balance());
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
@@ -155,11 +155,9 @@ class TimeLoop {
   void frame() {
     ++files_.meta.frame_index;
     const int every = scene_.output.checkpoint_every;
-    sim_.with_whole_state([&] {
-      files_.write_frame();
-      if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
-    });
+    sim_.with_whole_state([&] { files_.write_frame(); });
     files_.write_frame_pieces();
+    if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)

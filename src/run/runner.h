@@ -17,7 +17,7 @@ struct RunOptions {
   bool resume = false;   // continue from out_dir/checkpoint.bin
   bool progress = true;  // progress line on stderr
   long long max_steps = 0;  // stop (status completed) after this many steps of this run; 0: run to the end time
-  bool gather_output = false;  // distributed run: frames gathered into one .vtu, not per-rank pieces (--gather-output)
+  bool gather_output = false;  // distributed run: frames and checkpoint gathered on rank 0, not per-rank pieces (--gather-output)
   std::vector<std::string> command_line;  // recorded in run.json and summary.json
 };
 
