@@ -28,7 +28,6 @@
 #include "validation/linear_wave_report.h"
 #ifdef CDMPM_MPI
 #include "parallel/communicator.h"
-#include "parallel/distributable.h"
 #include "parallel/domain.h"
 #endif
 
@@ -196,13 +195,6 @@ int main(int argc, char** argv) {
     if (scene_path.empty()) throw std::runtime_error("run: a scene file is required (or --resume DIR)");
     scene = cdmpm::load_scene(scene_path, overrides);
     cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
-#ifdef CDMPM_MPI
-    if (cdmpm::mpi::size() > 1) {
-      const std::string first_phase = ": not distributed over MPI ranks yet (issue 18, first phase); run it with one process";
-      if (const std::string what = cdmpm::distributable(scene); !what.empty())
-        throw std::runtime_error(scene.path + ": " + what + first_phase);
-    }
-#endif
   } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
     if (speaks()) std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;

@@ -3,7 +3,8 @@
 // exchanges (parallel/halo_exchange.h), and the dynamic load balancing: at each particle sort (every
 // Simulation::reorder_interval steps) the particle imbalance max / mean over the ranks is measured and, above
 // rebalance_threshold (mpirun option of `cdmpm run`: --rebalance, default 1.1), the blocks are partitioned again for
-// the current counts and the particles migrate. The imbalance measured at each sort (before any new partition) is
+// the current counts and the particles migrate; a well-balanced bed's fixed layer is split again for the new cuts
+// (parallel/bed_part.h). The imbalance measured at each sort (before any new partition) is
 // recorded: the last, the largest, and the largest after the first new partition (summary.json "distributed").
 // None of this changes a result: a run gives the same bits on any number of ranks and with any threshold.
 #pragma once
@@ -11,11 +12,13 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 #include "core/particles.h"
 #include "grid/grid.h"
 #include "grid/particle_bins.h"
+#include "parallel/bed_part.h"
 #include "parallel/communicator.h"
 #include "parallel/halo_exchange.h"
 #include "parallel/migration.h"
@@ -33,9 +36,10 @@ class Domain {
   // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
   // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
   // `joined`: pairs of blocks that one rank must own together (the mirror pairs of static slip boxes,
-  // Boundary::mirror_node_pairs; the walls' pairs are shared instead, parallel/mirror_zone.h).
+  // Boundary::mirror_node_pairs; the walls' pairs are shared instead, parallel/mirror_zone.h). `bed`: the whole
+  // bed layer of the well-balanced beds, binned (sim/bed_layer.h; kept by reference), or null if there is none.
   Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size,
-         const std::vector<std::array<size_t, 2>>& joined = {})
+         const std::vector<std::array<size_t, 2>>& joined = {}, const BedLayer<dim>* bed = nullptr)
       : zone_(g, domain_size) {
     if (!joined.empty()) allowed_ = every_cut(g.block_count());
     for (const auto& [a, b] : joined) keep_together(allowed_, a, b);
@@ -51,6 +55,10 @@ class Domain {
     if (kept.size() != p.size()) {
       p.permute(kept);
       keep_keys(keys_, kept);
+    }
+    if (bed && !bed->empty()) {
+      bed_ = std::make_unique<BedPart<dim>>(*bed);
+      bed_->update(part_, g);
     }
   }
 
@@ -82,6 +90,7 @@ class Domain {
     ++repartitions_;
     migrated_ += migrate(p, keys_, g, part_);
     bins.build(p, g);
+    if (bed_) bed_->update(part_, g);
   }
 
   // After advection: particles to the ranks owning their blocks.
@@ -97,10 +106,17 @@ class Domain {
     return gather_particles(p, keys_, solids_only);
   }
 
-  // p2g with the halo exchanges (parallel/halo_exchange.h).
+  // p2g with the halo exchanges (parallel/halo_exchange.h). With a bed layer as one process does it
+  // (Simulation::advance): the water's scatter with dt = 0, complete on the layer's stencils (bed_part.h), gives the
+  // layer's velocity; then the water's scatter and the layer's after it.
   void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
            Real dt) {
-    halo.p2g(p, materials, bins, g, dt, part_, zone_);
+    if (!bed_) return halo.p2g({{&p, &bins}}, materials, g, dt, part_, zone_);
+    BedLayer<dim>& layer = bed_->mine();
+    halo.p2g({{&p, &bins}}, materials, g, Real(0), part_, zone_, layer.bins.blocks, bed_->own_touched());
+    halo.complete(g, bed_->to(), bed_->from());
+    layer.take_velocity(g);
+    halo.p2g({{&p, &bins}, {&layer.particles, &layer.bins}}, materials, g, dt, part_, zone_);
   }
 
   HaloExchange<dim> halo;
@@ -124,6 +140,7 @@ class Domain {
   }
 
   MirrorZone<dim> zone_;
+  std::unique_ptr<BedPart<dim>> bed_;  // this rank's part of the bed layer (null without one)
   std::vector<uint8_t> allowed_;  // where cuts may lie (partition.h; empty: anywhere)
   BlockPartition part_;
   std::vector<uint64_t> keys_;

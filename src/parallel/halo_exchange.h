@@ -9,7 +9,10 @@
 //    of colour c: each owned node gets exactly the one-process sum, in the one-process order, with absent colours
 //    skipped (no explicit zeros, which would turn -0.0 into +0.0). Contributions only flow up the block order
 //    (b + {0,1}^dim >= b), so from lower ranks to higher ones. The owner also activates its blocks that only the
-//    received patches touch.
+//    received patches touch. Several particle sets (the particles, then a well-balanced bed's fixed layer,
+//    parallel/bed_part.h) are summed one after the other, as one process's successive p2g calls: each set's
+//    patches travel apart and are added in the colour slots of that set's scatter, onto the complete sums of the
+//    sets before it, so a node is (set 0 in colour order) + (set 1 in colour order) + ..., the one-process sum.
 // 3. Mirror zone (after the halo sum, before the fold; parallel/mirror_zone.h). A cut may separate a wall's ghost
 //    node from its mirror node. The owner of an active block b in a wall's zone sends it, complete, to every other
 //    rank owning a block of D(b): first the list of those blocks (before the grid is activated, so the receiver
@@ -34,17 +37,123 @@
 
 namespace cdmpm {
 
+// One set of particles for the scatter, with its bins: the water and solids, or a bed layer's fixed particles.
+template <int dim>
+struct ScatterSet {
+  const Particles<dim>* particles;
+  const ParticleBins* bins;
+};
+
 template <int dim>
 class HaloExchange {
  public:
-  // p2g of this rank's particles with the halo sum (1. above) and the mirror zone (3.); activates the grid first.
-  void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
-           Real dt, const BlockPartition& part, const MirrorZone<dim>& zone) {
+  // p2g of this rank's particle sets, one after the other, with the halo sum (1. above) and the mirror zone (3.):
+  // each set adds onto the complete sums of the sets before it, as one process's successive p2g calls do (so a
+  // node is (set 0's patches in colour order) + (set 1's in colour order) + ...). Activates the grid first: the
+  // blocks touched by the sets' bins and by `more_bins` (bin blocks of particles not scattered here whose stencil
+  // nodes one process activates too, e.g. the bed layer's in the scatter with dt = 0), the own blocks that the
+  // received patches touch, and `more_own` (own blocks other ranks' unscattered particles touch).
+  void p2g(const std::vector<ScatterSet<dim>>& sets, const std::vector<Material>& materials, Grid<dim>& g, Real dt,
+           const BlockPartition& part, const MirrorZone<dim>& zone, const std::vector<uint32_t>& more_bins = {},
+           const std::vector<uint32_t>& more_own = {}) {
+    const int ranks = mpi::size();
+    ghost_from_.assign(ranks, {});
+    received_.assign(sets.size(), {});
+    for (size_t s = 0; s < sets.size(); ++s) received_[s] = send_patches(sets[s], materials, g, dt, part);
+    for (auto& list : ghost_from_) sort_unique(list);
+    // The received patches by set and colour, and the own blocks they touch.
+    incoming_.assign(sets.size(), std::vector<std::vector<Incoming>>(1u << dim));
+    shared_to_.assign(ranks, {});
+    std::vector<uint32_t> extra = more_own, binned = more_bins;
+    for (size_t s = 0; s < sets.size(); ++s) {
+      take_patches(received_[s], incoming_[s], g, part, extra);
+      binned.insert(binned.end(), sets[s].bins->blocks.begin(), sets[s].bins->blocks.end());
+    }
+    for (auto& list : shared_to_) sort_unique(list);
+    sort_unique(extra);
+    sort_unique(binned);
+    announce_zone(binned, g, part, zone, extra);
+    g.activate(binned, extra);
+    for (size_t s = 0; s < sets.size(); ++s)
+      cdmpm::p2g(*sets[s].particles, materials, *sets[s].bins, g, dt, [&](int colour) {
+        const auto& in = incoming_[s][colour];
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < in.size(); ++i) {
+          PatchRecords<dim> node;
+          std::copy(in[i].data, in[i].data + sizeof node, reinterpret_cast<char*>(node.data()));
+          add_patch(g, in[i].block, node);
+        }
+      });
+    complete(g, zone_to_, zone_from_);
+  }
+
+  // After a halo sum: sends the (complete) mass and momentum of this rank's blocks to[r] to rank r, and replaces
+  // those of the blocks from[r] (rank r's) with the ones received from r. Both lists ascending, blocks active on
+  // both sides. The mirror zone's copies (3. above) and the bed layer's ghost nodes (parallel/bed_part.h).
+  void complete(Grid<dim>& g, const std::vector<std::vector<uint32_t>>& to,
+                const std::vector<std::vector<uint32_t>>& from) {
+    const int ranks = mpi::size();
+    constexpr size_t n = Grid<dim>::block_nodes;
+    std::vector<mpi::Bytes> out(ranks);
+    for (int r = 0; r < ranks; ++r)
+      for (const uint32_t b : to[r]) {
+        const size_t k = active_storage(g, b);
+        mpi::put(out[r], g.mass.data() + k, n);
+        mpi::put(out[r], g.momentum.data() + k, n);
+        halo_bytes_ += n * (sizeof(Real) + sizeof(Vec<dim>));
+      }
+    const std::vector<mpi::Bytes> in = mpi::exchange(out);
+    for (int r = 0; r < ranks; ++r) {
+      if (in[r].size() != from[r].size() * n * (sizeof(Real) + sizeof(Vec<dim>)))
+        mpi::abort("complete blocks from rank " + std::to_string(r) + ": " + std::to_string(in[r].size()) +
+                       " bytes, expected " + std::to_string(from[r].size()) + " blocks",
+                   1);
+      mpi::Reader read{in[r]};
+      for (const uint32_t b : from[r]) {
+        const size_t k = active_storage(g, b);
+        read.get(g.mass.data() + k, n);
+        read.get(g.momentum.data() + k, n);
+      }
+    }
+  }
+
+  // The velocity copy (2. above), after the unfold.
+  void share_velocities(Grid<dim>& g) {
+    const int ranks = mpi::size();
+    std::vector<mpi::Bytes> out(ranks);
+    for (int r = 0; r < ranks; ++r)
+      for (const uint32_t b : shared_to_[r]) {
+        mpi::put(out[r], g.momentum.data() + active_storage(g, b), Grid<dim>::block_nodes);
+        halo_bytes_ += Grid<dim>::block_nodes * sizeof(Vec<dim>);
+      }
+    const std::vector<mpi::Bytes> in = mpi::exchange(out);
+    for (int r = 0; r < ranks; ++r) {
+      const auto& list = ghost_from_[r];
+      if (in[r].size() != list.size() * Grid<dim>::block_nodes * sizeof(Vec<dim>))
+        mpi::abort("velocity halo from rank " + std::to_string(r) + " has " + std::to_string(in[r].size()) +
+                       " bytes, expected " + std::to_string(list.size()) + " blocks",
+                   1);
+      mpi::Reader read{in[r]};
+      for (const uint32_t b : list) read.get(g.momentum.data() + active_storage(g, b), Grid<dim>::block_nodes);
+    }
+  }
+
+  // Bytes sent by this rank in both exchanges since the start.
+  double halo_bytes() const { return halo_bytes_; }
+
+ private:
+  struct Incoming {
+    uint32_t block;
+    const char* data;  // the patch records, in received_
+  };
+  // 1. above, sending side, for one set: the patch of each bin whose blocks reach other ranks' blocks, whole, to
+  // those ranks (their blocks noted in ghost_from_); returns what the other ranks sent here.
+  std::vector<mpi::Bytes> send_patches(const ScatterSet<dim>& set, const std::vector<Material>& materials,
+                                       const Grid<dim>& g, Real dt, const BlockPartition& part) {
     const int me = mpi::rank(), ranks = mpi::size();
-    // The bins whose patch reaches blocks of other ranks, and those ranks.
+    const ParticleBins& bins = *set.bins;
     std::vector<uint32_t> boundary;
     std::vector<std::vector<int>> dest;
-    ghost_from_.assign(ranks, {});
     for (uint32_t j = 0; j < bins.bin_count(); ++j) {
       const IVec<dim> c = g.block_coords(bins.blocks[j]);
       std::vector<int> to;
@@ -61,10 +170,10 @@ class HaloExchange {
         dest.push_back(std::move(to));
       }
     }
-    for (auto& list : ghost_from_) sort_unique(list);
     std::vector<PatchAccumulator<dim>> acc(boundary.size());
 #pragma omp parallel for schedule(dynamic, 4)
-    for (size_t i = 0; i < boundary.size(); ++i) scatter_bin(p, materials, bins, g, boundary[i], dt, acc[i]);
+    for (size_t i = 0; i < boundary.size(); ++i)
+      scatter_bin(*set.particles, materials, bins, g, boundary[i], dt, acc[i]);
     std::vector<mpi::Bytes> out(ranks);
     for (size_t i = 0; i < boundary.size(); ++i)
       for (const int r : dest[i]) {
@@ -72,17 +181,20 @@ class HaloExchange {
         mpi::put(out[r], acc[i].node.data(), acc[i].node.size());
         halo_bytes_ += sizeof(uint32_t) + sizeof(acc[i].node);
       }
-    received_ = mpi::exchange(out);
-    // The received patches by colour, and the own blocks they touch.
-    incoming_.assign(1u << dim, {});
-    shared_to_.assign(ranks, {});
-    std::vector<uint32_t> extra;
-    for (int s = 0; s < static_cast<int>(received_.size()); ++s) {
-      const mpi::Bytes& b = received_[s];
+    return mpi::exchange(out);
+  }
+
+  // 1. above, receiving side, for one set: the received patches by colour, the own blocks they touch (to `extra`
+  // and, per sender, shared_to_).
+  void take_patches(const std::vector<mpi::Bytes>& received, std::vector<std::vector<Incoming>>& by_colour,
+                    const Grid<dim>& g, const BlockPartition& part, std::vector<uint32_t>& extra) {
+    const int me = mpi::rank();
+    for (int s = 0; s < static_cast<int>(received.size()); ++s) {
+      const mpi::Bytes& b = received[s];
       for (size_t at = 0; at < b.size(); at += sizeof(uint32_t) + sizeof(PatchRecords<dim>)) {
         uint32_t block;
         std::copy(b.data() + at, b.data() + at + sizeof block, reinterpret_cast<char*>(&block));
-        incoming_[g.block_colour(block)].push_back({block, b.data() + at + sizeof block});
+        by_colour[g.block_colour(block)].push_back({block, b.data() + at + sizeof block});
         const IVec<dim> c = g.block_coords(block);
         for (int m = 0; m < (1 << dim); ++m) {
           const size_t nb = g.upper_neighbour(c, m);
@@ -92,60 +204,22 @@ class HaloExchange {
         }
       }
     }
-    for (auto& list : shared_to_) sort_unique(list);
-    sort_unique(extra);
-    announce_zone(bins, g, part, zone, extra);
-    g.activate(bins.blocks, extra);
-    cdmpm::p2g(p, materials, bins, g, dt, [&](int colour) {
-      const auto& in = incoming_[colour];
-#pragma omp parallel for schedule(static)
-      for (size_t i = 0; i < in.size(); ++i) {
-        PatchRecords<dim> node;
-        std::copy(in[i].data, in[i].data + sizeof node, reinterpret_cast<char*>(node.data()));
-        add_patch(g, in[i].block, node);
-      }
-    });
-    share_zone(g);
   }
 
-  // The velocity copy (2. above), after the unfold.
-  void share_velocities(Grid<dim>& g) {
-    const int ranks = mpi::size();
-    std::vector<mpi::Bytes> out(ranks);
-    for (int r = 0; r < ranks; ++r)
-      for (const uint32_t b : shared_to_[r]) {
-        const size_t k = g.block_storage(b);
-        if (k == Grid<dim>::npos) mpi::abort("halo block " + std::to_string(b) + " is not active on its owner", 1);
-        mpi::put(out[r], g.momentum.data() + k, Grid<dim>::block_nodes);
-        halo_bytes_ += Grid<dim>::block_nodes * sizeof(Vec<dim>);
-      }
-    const std::vector<mpi::Bytes> in = mpi::exchange(out);
-    for (int r = 0; r < ranks; ++r) {
-      const auto& list = ghost_from_[r];
-      if (in[r].size() != list.size() * Grid<dim>::block_nodes * sizeof(Vec<dim>))
-        mpi::abort("velocity halo from rank " + std::to_string(r) + " has " + std::to_string(in[r].size()) +
-                       " bytes, expected " + std::to_string(list.size()) + " blocks",
-                   1);
-      mpi::Reader read{in[r]};
-      for (const uint32_t b : list) read.get(g.momentum.data() + g.block_storage(b), Grid<dim>::block_nodes);
-    }
+  // The storage of block b, which an exchange needs active.
+  static size_t active_storage(const Grid<dim>& g, uint32_t b) {
+    const size_t k = g.block_storage(b);
+    if (k == Grid<dim>::npos) mpi::abort("exchanged block " + std::to_string(b) + " is not active", 1);
+    return k;
   }
 
-  // Bytes sent by this rank in both exchanges since the start.
-  double halo_bytes() const { return halo_bytes_; }
-
- private:
-  struct Incoming {
-    uint32_t block;
-    const char* data;  // the patch records, in received_
-  };
   // 3. above, first part: the active own blocks of the mirror zone to the ranks owning blocks of their D, and
   // theirs to `extra` (the blocks to activate besides those of the particles).
-  void announce_zone(const ParticleBins& bins, const Grid<dim>& g, const BlockPartition& part, const MirrorZone<dim>& zone,
-                     std::vector<uint32_t>& extra) {
+  void announce_zone(const std::vector<uint32_t>& binned, const Grid<dim>& g, const BlockPartition& part,
+                     const MirrorZone<dim>& zone, std::vector<uint32_t>& extra) {
     const int me = mpi::rank(), ranks = mpi::size();
     std::vector<uint32_t> mine = extra;  // this rank's active blocks: extra holds only own blocks so far
-    for (const uint32_t b : bins.blocks) {
+    for (const uint32_t b : binned) {
       const IVec<dim> c = g.block_coords(b);
       for (int m = 0; m < (1 << dim); ++m) {
         const size_t nb = g.upper_neighbour(c, m);
@@ -175,36 +249,8 @@ class HaloExchange {
     sort_unique(extra);
   }
 
-  // 3. above, second part: the complete mass and momentum of the announced blocks.
-  void share_zone(Grid<dim>& g) {
-    const int ranks = mpi::size();
-    constexpr size_t n = Grid<dim>::block_nodes;
-    std::vector<mpi::Bytes> out(ranks);
-    for (int r = 0; r < ranks; ++r)
-      for (const uint32_t b : zone_to_[r]) {
-        const size_t k = g.block_storage(b);
-        mpi::put(out[r], g.mass.data() + k, n);
-        mpi::put(out[r], g.momentum.data() + k, n);
-        halo_bytes_ += n * (sizeof(Real) + sizeof(Vec<dim>));
-      }
-    const std::vector<mpi::Bytes> in = mpi::exchange(out);
-    for (int r = 0; r < ranks; ++r) {
-      mpi::Reader read{in[r]};
-      for (const uint32_t b : zone_from_[r]) {
-        const size_t k = g.block_storage(b);
-        read.get(g.mass.data() + k, n);
-        read.get(g.momentum.data() + k, n);
-      }
-    }
-  }
-
-  static void sort_unique(std::vector<uint32_t>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-  }
-
-  std::vector<mpi::Bytes> received_;               // this step's received patches (incoming_ points into them)
-  std::vector<std::vector<Incoming>> incoming_;    // per colour
+  std::vector<std::vector<mpi::Bytes>> received_;  // per set: this step's received patches (incoming_ points into them)
+  std::vector<std::vector<std::vector<Incoming>>> incoming_;  // per set and colour
   std::vector<std::vector<uint32_t>> ghost_from_;  // per rank: its blocks that this rank holds as halo, ascending
   std::vector<std::vector<uint32_t>> shared_to_;   // per rank: this rank's blocks that rank holds as halo, ascending
   std::vector<std::vector<uint32_t>> zone_to_;     // per rank: this rank's mirror-zone blocks sent there (3.)

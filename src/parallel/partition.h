@@ -32,6 +32,12 @@ struct BlockPartition {
   }
 };
 
+// Sorts a list of block indices and drops repeats (both sides of an exchange list its blocks ascending).
+inline void sort_unique(std::vector<uint32_t>& blocks) {
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+}
+
 // Per cut position c = 0 .. block_count (blocks < c before the cut): 1 if a cut may lie there; all allowed.
 inline std::vector<uint8_t> every_cut(size_t block_count) { return std::vector<uint8_t>(block_count + 1, 1); }
 

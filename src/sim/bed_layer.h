@@ -29,7 +29,9 @@
 // They are not written, advected or counted in probes or energies. The slip condition on the nodes inside the bed
 // still stops the water's motion into it. Limit: the layer's pressure is the still water's; a wave's dynamic
 // pressure at the bed is carried by the slip condition alone, as before.
-// Deterministic: v_b is a per-particle gather; the layer is scattered like the particles, in a fixed order.
+// Deterministic: v_b is a per-particle gather; the layer is scattered like the particles, in a fixed order. A
+// distributed run gives the same bits: each rank holds the layer particles of its blocks, reads the owners' complete
+// sums on the nodes of other ranks, and its scatter adds after the water's as here (parallel/bed_part.h).
 #pragma once
 
 #include <vector>

@@ -12,9 +12,6 @@
 #include "material/constitutive_update.h"
 #include "material/stress.h"
 #include "parallel/reduction.h"
-#ifdef CDMPM_MPI
-#include "parallel/distributable.h"
-#endif
 #include "sim/advect.h"
 #include "sim/seeding.h"
 #include "sim/sinks.h"
@@ -40,7 +37,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
   rigid.init(s, materials, particles, grid.dx);
 #ifdef CDMPM_MPI
-  if (mpi::active() && distributable(s).empty()) make_domain();
+  if (mpi::active()) make_domain();
 #endif
   crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
@@ -89,14 +86,15 @@ void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_refer
 
 #ifdef CDMPM_MPI
 // Partitions the particles (all of the scene on every rank) and keeps this rank's, with the blocks of the
-// boundaries' mirror pairs kept on one rank (parallel/partition.h).
+// boundaries' mirror pairs kept on one rank (parallel/partition.h), and this rank's part of the bed layer
+// (parallel/bed_part.h; bed_ keeps the whole layer, which every rank seeded).
 template <int dim>
 void Simulation<dim>::make_domain() {
   std::vector<std::array<size_t, 2>> joined;
   for (const auto& b : boundaries)
     for (const auto& [i, j] : b->mirror_node_pairs(grid))
       joined.push_back({grid.block_index(grid.block_of(i)), grid.block_index(grid.block_of(j))});
-  domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size, joined);
+  domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size, joined, &bed_);
 }
 #endif
 
@@ -155,14 +153,14 @@ template <int dim>
 void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::Bin, [&] { bin(); });
   timer_.run(Phase::P2G, [&] {
+#ifdef CDMPM_MPI
+    if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);  // the bed layer's too, as below
+#endif
     if (!bed_.empty()) {  // the water's velocity along the bed, for the bed layer (sim/bed_layer.h)
       p2g(particles, materials, bins_, grid, Real(0));
       bed_.take_velocity(grid);
       grid.clear();
     }
-#ifdef CDMPM_MPI
-    if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);
-#endif
     p2g(particles, materials, bins_, grid, dt);
     if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);
   });

@@ -71,7 +71,7 @@ class Simulation {
   // read no particle (file bookkeeping). Not collective.
   void on_root(const std::function<void()>& f);
 #ifdef CDMPM_MPI
-  // This rank's part of a distributed run (null in one process or for a scene run undistributed).
+  // This rank's part of a distributed run (null in one process).
   const Domain<dim>* domain() const { return domain_.get(); }
 #endif
 
