@@ -2,6 +2,8 @@
 //
 //   cdmpm run SCENE [--out DIR] [--threads N] [--set path=value ...] [--steps N] [--quiet] [--force]
 //   cdmpm run [SCENE] --resume DIR [--set time.end=...]   (scene and --set values from DIR/run.json)
+//   cdmpm run SCENE --dry-run --ranks N [--threads T] [--core-rate R]   (the partition of a distributed run on N
+//         ranks, without its particles: per-rank particles, blocks, halo bytes, memory; run/run_plan.h; prints JSON)
 //   cdmpm check SCENE... [--set path=value ...]   (validity and the estimated cost of each run, run/run_estimate.h)
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
@@ -23,6 +25,7 @@
 #include "parallel/omp_wait_policy.h"
 #include "run/interrupt.h"
 #include "run/run_estimate.h"
+#include "run/run_plan.h"
 #include "run/runner.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
@@ -114,8 +117,19 @@ int main(int argc, char** argv) {
   run->add_option("--steps", max_steps, "Stop after N steps (e.g. to measure speed and memory); summary.json says so")
       ->check(CLI::PositiveNumber);
   run->add_flag("--quiet", quiet, "No progress line");
-  bool force = false, gather_output = false;
+  bool force = false, gather_output = false, dry_run = false;
   run->add_flag("--force", force, "Run even if the estimate exceeds the machine's memory or the frame limit");
+  cdmpm::PlanOptions plan;
+  run->add_flag("--dry-run", dry_run,
+                "Do not run: seed the scene keeping no particle, partition it for --ranks ranks as a distributed run "
+                "does, and print (JSON) each rank's particles, blocks, halo bytes per step, memory and a projected "
+                "step time (run/run_plan.h); writes nothing");
+  run->add_option("--ranks", plan.ranks, "With --dry-run: the number of ranks to plan for (default 1)")
+      ->check(CLI::Range(1, 1 << 20));
+  run->add_option("--core-rate", plan.core_rate,
+                  "With --dry-run: particle-steps per second per core for the projected step time (default 1e6 in "
+                  "3D, 2e6 in 2D)")
+      ->check(CLI::PositiveNumber);
 #ifdef CDMPM_MPI
   run->add_option("--rebalance", cdmpm::rebalance_threshold,
                   "Distributed run: partition the blocks again when the particle imbalance max/mean over the ranks "
@@ -194,7 +208,18 @@ int main(int argc, char** argv) {
     if (!resume_dir.empty()) resume_inputs(resume_dir, scene_path, overrides);
     if (scene_path.empty()) throw std::runtime_error("run: a scene file is required (or --resume DIR)");
     scene = cdmpm::load_scene(scene_path, overrides);
-    cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force);
+#ifdef CDMPM_MPI
+    const int ranks_here = cdmpm::mpi::node_size(), ranks = cdmpm::mpi::size();
+#else
+    const int ranks_here = 1, ranks = 1;
+#endif
+    cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force || dry_run, ranks_here, ranks);
+    if (dry_run) {
+      plan.threads = threads > 0 ? threads : 1;
+      const nlohmann::json out = cdmpm::plan_run(scene, plan);
+      if (speaks()) std::cout << out.dump(2) << "\n";
+      return 0;
+    }
   } catch (const std::exception& e) {  // SceneError, or anything else a hostile file provokes: input error
     if (speaks()) std::cerr << "cdmpm: error: " << e.what() << "\n";
     return 2;

@@ -47,26 +47,26 @@ struct Particles {
   size_t solid_count() const { return F.size(); }
   uint64_t next_id = 0;  // id of the next particle added
 
+  // Adds a copy of particle q of `from`, keeping its id (next_id unchanged): a solid after this set's solids, a fluid
+  // at the end.
+  void add_copy(const Particles& from, size_t q) {
+    const uint64_t next = next_id;
+    const bool solid = q < from.solid_count();
+    if (solid) add_solid(from.x[q], from.v[q], from.mass[q], from.J[q], from.material[q], from.C[q], from.F[q], from.alpha[q]);
+    else add_fluid(from.x[q], from.v[q], from.mass[q], from.J[q], from.material[q], from.C[q]);
+    id[solid ? solid_count() - 1 : size() - 1] = from.id[q];
+    next_id = next;
+  }
   // Copies of the particles listed in `indices` (ascending), solids first as always: the batch a process sends
   // away when particles migrate (docs/architecture.md).
   Particles extract(const std::vector<uint32_t>& indices) const {
     Particles out;
-    for (const uint32_t q : indices) {
-      const bool solid = q < solid_count();
-      if (solid) out.add_solid(x[q], v[q], mass[q], J[q], material[q], C[q], F[q], alpha[q]);
-      else out.add_fluid(x[q], v[q], mass[q], J[q], material[q], C[q]);
-      out.id[solid ? out.solid_count() - 1 : out.size() - 1] = id[q];
-    }
+    for (const uint32_t q : indices) out.add_copy(*this, q);
     return out;
   }
   // Adds a batch (from extract), keeping its ids: its solids after this set's solids, its fluids at the end.
   void append(const Particles& batch) {
-    for (size_t q = 0; q < batch.size(); ++q) {
-      if (q < batch.solid_count()) add_solid(batch.x[q], batch.v[q], batch.mass[q], batch.J[q], batch.material[q], batch.C[q],
-                                             batch.F[q], batch.alpha[q]);
-      else add_fluid(batch.x[q], batch.v[q], batch.mass[q], batch.J[q], batch.material[q], batch.C[q]);
-      id[q < batch.solid_count() ? solid_count() - 1 : size() - 1] = batch.id[q];
-    }
+    for (size_t q = 0; q < batch.size(); ++q) add_copy(batch, q);
   }
 
   // Appends a fluid particle.

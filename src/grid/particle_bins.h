@@ -25,6 +25,13 @@
 
 namespace cdmpm {
 
+// The bin block of a particle at x: the block holding its stencil base node (the one place of this rule).
+template <int dim>
+size_t bin_block(const Vec<dim>& x, const Grid<dim>& g) {
+  const BSplineStencil<dim> s(x * g.inv_dx);
+  return g.block_index(g.block_of(s.base));
+}
+
 struct ParticleBins {
   std::vector<uint32_t> blocks;       // lattice block index of each bin (non-empty blocks), ascending
   std::vector<uint32_t> start;        // order[start[j] .. start[j+1]) are bin j's particles, ascending
@@ -51,8 +58,7 @@ struct ParticleBins {
       auto& runs = runs_[t];
       runs.clear();
       for (size_t k = lo; k < hi; ++k) {
-        const BSplineStencil<dim> s(p.x[k] * g.inv_dx);
-        const auto b = static_cast<uint32_t>(g.block_index(g.block_of(s.base)));
+        const auto b = static_cast<uint32_t>(bin_block(p.x[k], g));
         if (runs.empty() || runs.back().block != b) runs.push_back({b, static_cast<uint32_t>(k), static_cast<uint32_t>(k)});
         ++runs.back().end;
       }

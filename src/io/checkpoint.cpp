@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 
 #include "io/checkpoint_format.h"
 
@@ -173,20 +174,11 @@ std::pair<uint64_t, uint32_t> write_file(const std::string& path, const char (&m
   return {bytes, crc};
 }
 
-// checkpoint_S_rR.bin, S a or b, R a rank: a name in the manifest's folder (no path).
-bool is_piece_name(const std::string& f) {
-  const std::string prefix = "checkpoint_", suffix = ".bin";
-  if (f.size() <= prefix.size() + 3 + suffix.size() || !f.starts_with(prefix) || !f.ends_with(suffix)) return false;
-  if ((f[11] != 'a' && f[11] != 'b') || f[12] != '_' || f[13] != 'r') return false;
-  const std::string rank = f.substr(14, f.size() - 14 - suffix.size());
-  return !rank.empty() && rank.size() < 10 && std::all_of(rank.begin(), rank.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
 // A piece the manifest names: its file in the manifest's folder, checked against the manifest's record, its
 // particles appended to `pieces` and their keys to `keys`.
 template <int dim>
 void read_piece(const std::string& manifest, const CheckpointPiece& rec, Particles<dim>& piece, std::vector<uint64_t>& keys) {
-  if (!is_piece_name(rec.file))
+  if (!checkpoint_piece_slot(rec.file))
     throw CheckpointError(manifest + ": checkpoint is corrupt (piece file name '" + rec.file +
                           "', expected checkpoint_S_rR.bin with S a or b)");
   const std::string path = (std::filesystem::path(manifest).parent_path() / rec.file).string();
@@ -207,37 +199,51 @@ void read_piece(const std::string& manifest, const CheckpointPiece& rec, Particl
   if (r.left != 0) r.corrupt(std::to_string(r.left) + " bytes after the last array");
 }
 
-// The pieces merged into one array in key order (the one-process array; every solid key is below every fluid key).
+// The pieces `which` merged into one array in key order (of every piece: the one-process array; every solid key is
+// below every fluid key), and their keys.
 template <int dim>
-void merge_pieces(const std::string& manifest, const std::vector<CheckpointPiece>& recs, Particles<dim>& p) {
-  std::vector<Particles<dim>> pieces(recs.size());
-  std::vector<std::vector<uint64_t>> keys(recs.size());
+void merge_pieces(const std::string& manifest, const std::vector<CheckpointPiece>& recs, const std::vector<size_t>& which,
+                  Particles<dim>& p, std::vector<uint64_t>& merged_keys) {
+  std::vector<Particles<dim>> pieces(which.size());
+  std::vector<std::vector<uint64_t>> keys(which.size());
   struct Entry { uint64_t key; uint32_t piece, q; };
   std::vector<Entry> order;
-  for (size_t k = 0; k < recs.size(); ++k) {
-    read_piece(manifest, recs[k], pieces[k], keys[k]);
+  for (size_t k = 0; k < which.size(); ++k) {
+    read_piece(manifest, recs[which[k]], pieces[k], keys[k]);
     for (size_t q = 0; q < keys[k].size(); ++q) order.push_back({keys[k][q], uint32_t(k), uint32_t(q)});
   }
   std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
   Particles<dim> out;
   out.next_id = p.next_id;
+  merged_keys.resize(order.size());
   for (size_t i = 0; i < order.size(); ++i) {
     const Entry& e = order[i];
     if (i > 0 && order[i - 1].key == e.key)
       throw CheckpointError(manifest + ": checkpoint is corrupt (two pieces hold a particle of key " + std::to_string(e.key) + ")");
     const Particles<dim>& s = pieces[e.piece];
-    const bool solid = e.q < s.solid_count();
-    if (solid && out.size() > out.solid_count())
+    if (e.q < s.solid_count() && out.size() > out.solid_count())
       throw CheckpointError(manifest + ": checkpoint is corrupt (a solid's key after a fluid's)");
-    if (solid) out.add_solid(s.x[e.q], s.v[e.q], s.mass[e.q], s.J[e.q], s.material[e.q], s.C[e.q], s.F[e.q], s.alpha[e.q]);
-    else out.add_fluid(s.x[e.q], s.v[e.q], s.mass[e.q], s.J[e.q], s.material[e.q], s.C[e.q]);
-    out.id[solid ? out.solid_count() - 1 : out.size() - 1] = s.id[e.q];
+    out.add_copy(s, e.q);
+    merged_keys[i] = e.key;
   }
-  out.next_id = p.next_id;
   p = std::move(out);
 }
 
 }  // namespace
+
+std::string checkpoint_piece_name(char slot, int rank) {
+  return "checkpoint_" + std::string(1, slot) + "_r" + std::to_string(rank) + ".bin";
+}
+
+// checkpoint_S_rR.bin, S a or b, R a rank: a name in the manifest's folder (no path).
+char checkpoint_piece_slot(const std::string& f) {
+  const std::string prefix = "checkpoint_", suffix = ".bin";
+  if (f.size() <= prefix.size() + 3 + suffix.size() || !f.starts_with(prefix) || !f.ends_with(suffix)) return 0;
+  if ((f[11] != 'a' && f[11] != 'b') || f[12] != '_' || f[13] != 'r') return 0;
+  const std::string rank = f.substr(14, f.size() - 14 - suffix.size());
+  const bool digits = !rank.empty() && rank.size() < 10 && std::all_of(rank.begin(), rank.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return digits ? f[11] : 0;
+}
 
 template <int dim>
 void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& m) {
@@ -274,7 +280,7 @@ void write_checkpoint_manifest(const std::string& path, int dim, const Checkpoin
 }
 
 template <int dim>
-CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
+CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p, CheckpointShare* share) {
   std::ifstream is(path, std::ios::binary);
   char magic[8] = {};
   is.read(magic, 8);
@@ -300,7 +306,21 @@ CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p) {
     if (total != n || solids != ns) r.corrupt("the pieces' particle counts do not add up to the manifest's");
   }
   if (r.left != 0) r.corrupt(std::to_string(r.left) + " bytes after the last field");
-  if (manifest) merge_pieces(path, m.pieces, p);
+  std::vector<uint64_t> keys;
+  if (manifest) {
+    std::vector<size_t> which;
+    for (size_t k = 0; k < m.pieces.size(); ++k)
+      if (!share || int(k % size_t(share->ranks)) == share->rank) which.push_back(k);
+    merge_pieces(path, m.pieces, which, p, keys);
+  } else if (share) {  // the whole file was read: this rank keeps its range of the one-process array
+    const size_t R = size_t(share->ranks), r = size_t(share->rank), first = r * n / R, last = (r + 1) * n / R;
+    std::vector<uint32_t> kept(last - first);
+    std::iota(kept.begin(), kept.end(), uint32_t(first));
+    p.permute(std::move(kept));
+    keys.resize(last - first);
+    std::iota(keys.begin(), keys.end(), uint64_t(first));
+  }
+  if (share) share->keys = std::move(keys);
   return m;
 }
 
@@ -308,7 +328,7 @@ template void write_checkpoint<2>(const std::string&, Particles<2>&, const Check
 template void write_checkpoint<3>(const std::string&, Particles<3>&, const CheckpointMeta&);
 template CheckpointPiece write_checkpoint_piece<2>(const std::string&, Particles<2>&, const std::vector<uint64_t>&);
 template CheckpointPiece write_checkpoint_piece<3>(const std::string&, Particles<3>&, const std::vector<uint64_t>&);
-template CheckpointMeta read_checkpoint<2>(const std::string&, Particles<2>&);
-template CheckpointMeta read_checkpoint<3>(const std::string&, Particles<3>&);
+template CheckpointMeta read_checkpoint<2>(const std::string&, Particles<2>&, CheckpointShare*);
+template CheckpointMeta read_checkpoint<3>(const std::string&, Particles<3>&, CheckpointShare*);
 
 }  // namespace cdmpm

@@ -20,7 +20,9 @@
 //   magic "CDMPMPC1" | int32 dim | int32 sizeof(Real) | uint64 n | uint64 ns | the particles' order keys (length +
 //   uint64, ascending: their indices in the one-process array, parallel/migration.h) | the arrays as above | CRC-32.
 // Reading merges the pieces by key into the one-process array, so a checkpoint resumes on any number of ranks
-// (and in one process) with the bits of one file. The two slots alternate: the new pieces are written while the
+// (and in one process) with the bits of one file. A distributed run reads only its share (CheckpointShare): rank r
+// of R reads the pieces k with k % R == r, merged by key, and the ranks then partition and migrate the particles
+// (parallel/domain.h), so no rank holds the whole state. The two slots alternate: the new pieces are written while the
 // manifest still names the previous slot's, then the manifest is replaced, then the previous slot is removed.
 // Reading checks the magic, then the CRC over the whole file (and each piece's against the manifest and its own),
 // then every length against the bytes left before allocating (checkpoint_format.h); older formats (CDMPMCK2..8;
@@ -64,6 +66,19 @@ struct CheckpointMeta {
   std::vector<CheckpointPiece> pieces;  // a distributed run's per-rank pieces (empty: the particles are in the file)
 };
 
+// The file name of rank `rank`'s piece in slot `slot` ('a' or 'b'): checkpoint_S_rR.bin.
+std::string checkpoint_piece_name(char slot, int rank);
+// The slot of a piece's file name ('a' or 'b'), or 0 if `file` is not a piece's name.
+char checkpoint_piece_slot(const std::string& file);
+
+// What a rank of a distributed run reads of a checkpoint: the pieces k with k % ranks == rank, merged by key (of a
+// one-file checkpoint, read whole: the particles [rank n / ranks, (rank + 1) n / ranks)); `keys` receives their
+// order keys, ascending.
+struct CheckpointShare {
+  int rank = 0, ranks = 1;
+  std::vector<uint64_t> keys;
+};
+
 // One file (meta.pieces empty) with every particle.
 template <int dim>
 void write_checkpoint(const std::string& path, Particles<dim>& p, const CheckpointMeta& meta);
@@ -73,12 +88,13 @@ void write_checkpoint(const std::string& path, Particles<dim>& p, const Checkpoi
 template <int dim>
 CheckpointPiece write_checkpoint_piece(const std::string& path, Particles<dim>& p, const std::vector<uint64_t>& keys);
 void write_checkpoint_manifest(const std::string& path, int dim, const CheckpointMeta& meta);
-// Reads a file or a manifest and its pieces (merged by key: the one-process array). Throws CheckpointError
+// Reads a file or a manifest and its pieces (merged by key: the one-process array; with `share`, only that share).
+// Throws CheckpointError
 // (io/checkpoint_format.h) naming the file if it (or a piece) is missing, corrupt (checksum, a length past the end
 // of the file, a piece that is not the one the manifest names, keys not distinct), of another format version or
 // of another dim/precision. The values are
 // checked separately by validate_checkpoint.
 template <int dim>
-CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p);
+CheckpointMeta read_checkpoint(const std::string& path, Particles<dim>& p, CheckpointShare* share = nullptr);
 
 }  // namespace cdmpm

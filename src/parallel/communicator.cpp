@@ -82,6 +82,16 @@ int size() {
   return s;
 }
 
+int node_size() {
+  if (!active()) return 1;
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int s = 1;
+  MPI_Comm_size(node, &s);
+  MPI_Comm_free(&node);
+  return s;
+}
+
 LocalScope::LocalScope() { ++local_depth; }
 LocalScope::~LocalScope() { --local_depth; }
 

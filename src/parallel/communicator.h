@@ -33,6 +33,8 @@ class Session {
 bool active();
 int rank();
 int size();
+// The number of ranks on this machine (sharing its memory; MPI_COMM_TYPE_SHARED).
+int node_size();
 
 // While a LocalScope exists, the reductions below act on the calling process alone.
 class LocalScope {

@@ -7,12 +7,16 @@
 // (parallel/bed_part.h). The imbalance measured at each sort (before any new partition) is
 // recorded: the last, the largest, and the largest after the first new partition (summary.json "distributed").
 // None of this changes a result: a run gives the same bits on any number of ranks and with any threshold.
+// The first partition is made before the particles exist (sim/simulation.cpp: the scene's particles counted per
+// block, then each rank seeds only its own), so no rank holds the whole scene; a resumed run partitions the share
+// of the checkpoint each rank read, for the counts over all ranks, and migrates the particles to their owners.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/particles.h"
@@ -33,34 +37,41 @@ inline double rebalance_threshold = 1.1;
 template <int dim>
 class Domain {
  public:
-  // Every rank has seeded the whole scene identically: the first partition is computed from all particles, and
-  // each rank keeps those in its blocks (keys: the seeding order, the one-process array before its first sort).
-  // `joined`: pairs of blocks that one rank must own together (the mirror pairs of static slip boxes,
-  // Boundary::mirror_node_pairs; the walls' pairs are shared instead, parallel/mirror_zone.h). `bed`: the whole
-  // bed layer of the well-balanced beds, binned (sim/bed_layer.h; kept by reference), or null if there is none.
-  Domain(Particles<dim>& p, const Grid<dim>& g, const Vec<dim>& domain_size,
-         const std::vector<std::array<size_t, 2>>& joined = {}, const BedLayer<dim>* bed = nullptr)
-      : zone_(g, domain_size) {
-    if (!joined.empty()) allowed_ = every_cut(g.block_count());
-    for (const auto& [a, b] : joined) keep_together(allowed_, a, b);
+  // The decomposition before any particle is placed. `joined`: pairs of blocks that one rank must own together
+  // (the mirror pairs of static slip boxes, Boundary::mirror_node_pairs; the walls' pairs are shared instead,
+  // parallel/mirror_zone.h).
+  Domain(const Grid<dim>& g, const Vec<dim>& domain_size, const std::vector<std::array<size_t, 2>>& joined = {})
+      : zone_(g, domain_size), allowed_(allowed_cuts(g.block_count(), joined)) {}
+
+  // The first partition, from the number of particles the scene seeds in every block (`per_block`, indexed by
+  // block; the same on every rank: seeding is a pure function of the scene, sim/seeding.h).
+  void partition_seeded(const std::vector<uint32_t>& per_block, const Grid<dim>& g) {
     std::vector<uint32_t> blocks;
     std::vector<uint64_t> counts;
-    count_blocks(p, g, blocks, counts);
+    occupied_blocks(per_block, blocks, counts);
     part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count(), allowed_);
-    keys_.resize(p.size());
-    std::iota(keys_.begin(), keys_.end(), uint64_t(0));
-    std::vector<uint32_t> kept;
-    for (size_t q = 0; q < p.size(); ++q)
-      if (part_.owner(particle_block(p, q, g)) == mpi::rank()) kept.push_back(static_cast<uint32_t>(q));
-    if (kept.size() != p.size()) {
-      p.permute(kept);
-      keep_keys(keys_, kept);
-    }
-    if (bed && !bed->empty()) {
-      bed_ = std::make_unique<BedPart<dim>>(*bed);
-      bed_->update(part_, g);
-    }
   }
+  // This rank's seeded particles (those of its blocks under partition_seeded's cuts): their keys are their ids,
+  // their indices in the one-process array. `bed`: the whole bed layer of the well-balanced beds, binned
+  // (sim/bed_layer.h; kept by reference), or null if there is none.
+  void adopt_seeded(const Particles<dim>& p, const Grid<dim>& g, const BedLayer<dim>* bed) {
+    keys_ = p.id;
+    split_bed(g, bed);
+  }
+  // The particles a checkpoint gave this rank (any share of the whole, `keys` ascending): the blocks are partitioned
+  // for the counts over all ranks, and the particles migrate to their owners.
+  void adopt_loaded(Particles<dim>& p, std::vector<uint64_t> keys, const Grid<dim>& g, const BedLayer<dim>* bed) {
+    keys_ = std::move(keys);
+    std::vector<uint32_t> blocks;
+    std::vector<uint64_t> counts;
+    global_block_counts(p, g, blocks, counts);
+    part_ = balanced_partition(blocks, counts, mpi::size(), g.block_count(), allowed_);
+    migrate(p, keys_, g, part_);
+    split_bed(g, bed);
+  }
+
+  // The rank owning the block of a particle at x (its stencil base node's block, grid/particle_bins.h).
+  int owner_at(const Vec<dim>& x, const Grid<dim>& g) const { return part_.owner(bin_block(x, g)); }
 
   // The sort of a reorder step (as one process: stable by block, solids first), the new keys, and a new partition
   // if the imbalance passed the threshold. Leaves bins built for the current particles.
@@ -69,17 +80,9 @@ class Domain {
     p.permute(std::move(bins.order));
     rekey_after_sort(p, keys_);
     bins.build(p, g);
-    std::vector<uint64_t> counts(bins.bin_count());
-    for (size_t j = 0; j < counts.size(); ++j) counts[j] = bins.start[j + 1] - bins.start[j];
-    // Every rank's (block, count) pairs; blocks of different ranks are distinct and ascend with the rank.
-    mpi::Bytes mine;
-    for (size_t j = 0; j < counts.size(); ++j) mpi::put(mine, bins.blocks[j]), mpi::put(mine, counts[j]);
     std::vector<uint32_t> all_blocks;
     std::vector<uint64_t> all_counts;
-    for (const mpi::Bytes& b : mpi::allgather(mine)) {
-      mpi::Reader read{b};
-      while (!read.done()) all_blocks.push_back(read.get<uint32_t>()), all_counts.push_back(read.get<uint64_t>());
-    }
+    global_block_counts(bins, all_blocks, all_counts);
     last_imbalance_ = imbalance(rank_counts(part_, all_blocks, all_counts));
     max_imbalance_ = std::max(max_imbalance_, last_imbalance_);
     if (repartitions_ > 0) max_imbalance_repartitioned_ = std::max(max_imbalance_repartitioned_, last_imbalance_);
@@ -130,13 +133,37 @@ class Domain {
   double migrated() const { return migrated_; }
 
  private:
-  static void count_blocks(const Particles<dim>& p, const Grid<dim>& g, std::vector<uint32_t>& blocks,
-                           std::vector<uint64_t>& counts) {
+  // The particle count of every occupied block over all ranks (blocks ascending, distinct), from this rank's bins.
+  static void global_block_counts(const ParticleBins& bins, std::vector<uint32_t>& blocks, std::vector<uint64_t>& counts) {
+    mpi::Bytes mine;
+    for (size_t j = 0; j < bins.bin_count(); ++j)
+      mpi::put(mine, bins.blocks[j]), mpi::put(mine, uint64_t(bins.start[j + 1] - bins.start[j]));
+    std::vector<std::pair<uint32_t, uint64_t>> all;
+    for (const mpi::Bytes& b : mpi::allgather(mine)) {
+      mpi::Reader read{b};
+      while (!read.done()) {
+        const uint32_t block = read.get<uint32_t>();
+        all.emplace_back(block, read.get<uint64_t>());
+      }
+    }
+    std::sort(all.begin(), all.end());  // ranks may hold particles of one block (loaded particles, before migration)
+    blocks.clear(), counts.clear();
+    for (const auto& [block, n] : all) {
+      if (!blocks.empty() && blocks.back() == block) counts.back() += n;
+      else blocks.push_back(block), counts.push_back(n);
+    }
+  }
+  static void global_block_counts(const Particles<dim>& p, const Grid<dim>& g, std::vector<uint32_t>& blocks,
+                                  std::vector<uint64_t>& counts) {
     ParticleBins bins;
     bins.build(p, g);
-    blocks = bins.blocks;
-    counts.resize(bins.bin_count());
-    for (size_t j = 0; j < counts.size(); ++j) counts[j] = bins.start[j + 1] - bins.start[j];
+    global_block_counts(bins, blocks, counts);
+  }
+  // This rank's part of the bed layer under the current partition (parallel/bed_part.h).
+  void split_bed(const Grid<dim>& g, const BedLayer<dim>* bed) {
+    if (!bed || bed->empty()) return;
+    bed_ = std::make_unique<BedPart<dim>>(*bed);
+    bed_->update(part_, g);
   }
 
   MirrorZone<dim> zone_;

@@ -21,6 +21,7 @@
 #include "core/bspline.h"
 #include "core/particles.h"
 #include "grid/grid.h"
+#include "grid/particle_bins.h"
 #include "parallel/communicator.h"
 #include "parallel/partition.h"
 
@@ -63,11 +64,10 @@ struct ParticleRecord {
   }
 };
 
-// The block of particle q's stencil base node (the bin block, grid/particle_bins.h).
+// The block of particle q's stencil base node (its bin block, grid/particle_bins.h).
 template <int dim>
 size_t particle_block(const Particles<dim>& p, size_t q, const Grid<dim>& g) {
-  const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
-  return g.block_index(g.block_of(s.base));
+  return bin_block(p.x[q], g);
 }
 
 // The keys of the particles kept by p.permute(kept) (kept ascending: a removal or a departure), in place.

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -44,6 +45,22 @@ inline std::vector<uint8_t> every_cut(size_t block_count) { return std::vector<u
 // Forbids every cut between blocks a and b (in either order), so that one rank owns both.
 inline void keep_together(std::vector<uint8_t>& allowed, size_t a, size_t b) {
   for (size_t c = std::min(a, b) + 1; c <= std::max(a, b); ++c) allowed[c] = 0;
+}
+
+// Where cuts may lie when each pair of `joined` must have one owner (empty: anywhere).
+inline std::vector<uint8_t> allowed_cuts(size_t block_count, const std::vector<std::array<size_t, 2>>& joined) {
+  std::vector<uint8_t> allowed;
+  if (!joined.empty()) allowed = every_cut(block_count);
+  for (const auto& [a, b] : joined) keep_together(allowed, a, b);
+  return allowed;
+}
+
+// The occupied blocks (ascending) and their counts, from per-block counts.
+inline void occupied_blocks(const std::vector<uint32_t>& per_block, std::vector<uint32_t>& blocks,
+                            std::vector<uint64_t>& counts) {
+  blocks.clear(), counts.clear();
+  for (size_t b = 0; b < per_block.size(); ++b)
+    if (per_block[b] > 0) blocks.push_back(static_cast<uint32_t>(b)), counts.push_back(per_block[b]);
 }
 
 // The partition of `block_count` blocks over `ranks` ranks for particle counts `counts` of blocks `blocks`

@@ -79,7 +79,10 @@ std::string describe(const RunEstimate& e) {
   return os.str();
 }
 
-void check_run_fits(const Scene& s, const RunEstimate& e, bool force) {
+void check_run_fits(const Scene& s, const RunEstimate& whole, bool force, int ranks_here, int ranks) {
+  RunEstimate e = whole;
+  const double per_process = 8 * whole.lattice_blocks + 64e6;
+  e.memory_bytes = (whole.memory_bytes - per_process) * ranks_here / ranks + per_process * ranks_here;
   const std::string est = " (estimate: " + describe(e) + ")";
   for (int a = 0; a < s.dim; ++a)
     if (s.domain.size[a] / s.domain.dx >= double(1 << 30))
@@ -92,8 +95,10 @@ void check_run_fits(const Scene& s, const RunEstimate& e, bool force) {
   const std::string override_text = est + "; cdmpm run --force runs it anyway";
   const double machine = machine_memory_bytes();
   if (machine > 0 && e.memory_bytes > 0.9 * machine)
-    throw SceneError(s.path + ": the run needs about " + gigabytes(e.memory_bytes) + " of memory, the machine has " +
-                     gigabytes(machine) + ": coarsen domain.dx or bodies' particles_per_cell" + override_text);
+    throw SceneError(s.path + ": the run needs about " + gigabytes(e.memory_bytes) + " of memory" +
+                     (ranks > 1 ? " on this machine (" + std::to_string(ranks_here) + " of its " + std::to_string(ranks) + " ranks)" : "") +
+                     ", the machine has " + gigabytes(machine) + ": coarsen domain.dx or bodies' particles_per_cell" +
+                     (ranks > 1 ? ", or run on more machines (cdmpm run --dry-run --ranks N plans it)" : "") + override_text);
   if (e.frames > max_frames)
     throw SceneError(s.path + ": time.frame_interval: the run would write " + format_number(e.frames) +
                      " frames, more than " + format_number(max_frames) + ": raise time.frame_interval" + override_text);

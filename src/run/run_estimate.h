@@ -37,8 +37,11 @@ double machine_memory_bytes();
 
 // Throws SceneError, with the estimate in the message, if the grid's lattice overflows its indices (always), or,
 // unless `force`, if the run would need more memory than the machine has or write more than max_frames frames.
+// A distributed run of `ranks` ranks, `ranks_here` of them on this machine: each rank holds its share of the
+// particles and, whole, the lattice tables and the program (parallel/domain.h), so this machine needs
+// ranks_here / ranks of the particles' memory and ranks_here times the rest.
 inline constexpr double max_frames = 10000;
-void check_run_fits(const Scene& scene, const RunEstimate& estimate, bool force = false);
+void check_run_fits(const Scene& scene, const RunEstimate& estimate, bool force = false, int ranks_here = 1, int ranks = 1);
 
 // One line a person reads: "particles <= N, memory ~X GB, first dt Y s, ~S steps, F frames (~B GB), ~T".
 std::string describe(const RunEstimate& estimate);

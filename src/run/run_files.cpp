@@ -77,22 +77,28 @@ void RunFiles<dim>::start(const std::vector<std::string>& command_line) {
 template <int dim>
 void RunFiles<dim>::resume() {
   const std::string ckpt = path("checkpoint.bin").string();
-  // What the scene seeds (over all ranks of a distributed run, which then partitions the loaded particles again:
-  // Simulation::restore).
+  // What the scene seeds (over all ranks of a distributed run, each of which reads its share of the checkpoint,
+  // partitioned again and migrated by Simulation::restore).
   const auto seeded = static_cast<size_t>(global::sum(double(sim_.particles.size())));
   const auto seeded_solids = static_cast<size_t>(global::sum(double(sim_.particles.solid_count())));
-  meta = read_checkpoint(ckpt, sim_.particles);
-  slot_ = meta.pieces.empty() ? 0 : meta.pieces.front().file[11];  // checkpoint_S_rR.bin
+  CheckpointShare share;
+  CheckpointShare* mine = nullptr;
+#ifdef CDMPM_MPI
+  if (sim_.domain()) share.rank = mpi::rank(), share.ranks = mpi::size(), mine = &share;
+#endif
+  meta = read_checkpoint(ckpt, sim_.particles, mine);
+  slot_ = meta.pieces.empty() ? 0 : checkpoint_piece_slot(meta.pieces.front().file);
   validate_checkpoint(ckpt, meta, sim_.particles, sim_.scene);
   // Sinks remove particles, so a checkpoint of a scene with sinks may hold fewer than the scene seeds.
   const bool fewer_allowed = !sim_.sinks.empty();
-  const size_t n = sim_.particles.size(), ns = sim_.particles.solid_count();
+  const auto n = static_cast<size_t>(global::sum(double(sim_.particles.size())));
+  const auto ns = static_cast<size_t>(global::sum(double(sim_.particles.solid_count())));
   const bool fits = fewer_allowed ? n <= seeded && ns <= seeded_solids : n == seeded && ns == seeded_solids;
   if (!fits)
     throw std::runtime_error(ckpt + ": checkpoint holds " + std::to_string(n) + " particles (" + std::to_string(ns) +
                              " ice), the scene seeds " + (fewer_allowed ? "at most " : "") + std::to_string(seeded) + " (" +
                              std::to_string(seeded_solids) + " ice): resume with the scene and --set values of the run that wrote it");
-  sim_.restore(meta.time, meta.steps, static_cast<Real>(meta.wave_dt_at_start));
+  sim_.restore(meta.time, meta.steps, static_cast<Real>(meta.wave_dt_at_start), mine ? &share.keys : nullptr);
   if (!probes_.load_state(meta.probe_state))
     throw std::runtime_error(ckpt + ": checkpoint holds the state of other probes than the scene's");
   if (!sim_.rigid.load(meta.rigid_bodies))
@@ -186,8 +192,8 @@ void RunFiles<dim>::remove_pieces(char keep) const {
   std::vector<fs::path> old;
   for (const auto& entry : fs::directory_iterator(out_)) {
     const std::string name = entry.path().filename().string();
-    if (name.starts_with("checkpoint_") && name.size() > 12 && name[11] != keep && name.ends_with(".bin"))
-      old.push_back(entry.path());
+    const char slot = checkpoint_piece_slot(name);
+    if (slot && slot != keep) old.push_back(entry.path());
   }
   for (const auto& f : old) fs::remove(f);
 }
@@ -198,9 +204,8 @@ template <int dim>
 void RunFiles<dim>::checkpoint_pieces() {
 #ifdef CDMPM_MPI
   const char slot = slot_ == 'a' ? 'b' : 'a';
-  auto piece_name = [&](char s, int r) { return "checkpoint_" + std::string(1, s) + "_r" + std::to_string(r) + ".bin"; };
   const CheckpointPiece mine =
-      write_checkpoint_piece(path(piece_name(slot, mpi::rank())).string(), sim_.particles, sim_.domain()->keys());
+      write_checkpoint_piece(path(checkpoint_piece_name(slot, mpi::rank())).string(), sim_.particles, sim_.domain()->keys());
   mpi::Bytes b;
   mpi::put(b, mine.n), mpi::put(b, mine.ns), mpi::put(b, mine.bytes), mpi::put(b, mine.crc);
   const std::vector<mpi::Bytes> all = mpi::gather(b);
@@ -211,7 +216,7 @@ void RunFiles<dim>::checkpoint_pieces() {
     for (size_t r = 0; r < all.size(); ++r) {
       mpi::Reader read{all[r]};
       CheckpointPiece& piece = meta.pieces.emplace_back();
-      piece.file = piece_name(slot, static_cast<int>(r));
+      piece.file = checkpoint_piece_name(slot, static_cast<int>(r));
       piece.n = read.get<uint64_t>(), piece.ns = read.get<uint64_t>(), piece.bytes = read.get<uint64_t>();
       piece.crc = read.get<uint32_t>();
     }

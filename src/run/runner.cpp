@@ -84,10 +84,9 @@ class TimeLoop {
     if (result.status != "completed") std::cerr << "cdmpm: run " << result.status << ": " << result.reason << "\n";
     files_.close();
     times_.wall = elapsed();
-    sim_.with_whole_state([&] {
-      const nlohmann::json hazard = hazard_.active() ? write_hazard_report(opt_.out_dir, hazard_, scene_) : nlohmann::json();
-      write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
-    });
+    nlohmann::json hazard;
+    sim_.on_root([&] { if (hazard_.active()) hazard = write_hazard_report(opt_.out_dir, hazard_, scene_); });
+    write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
     return result;
   }
 

@@ -4,10 +4,12 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 
 #include "io/process_memory.h"
+#include "parallel/reduction.h"
 #include "probe/wave_report.h"
 #include "sim/phases.h"
 
@@ -26,13 +28,20 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
                    const nlohmann::json& hazard) {
   const Scene& scene = sim.scene;
   const std::filesystem::path out(out_dir);
+  // Collective: the sums over every rank's particles, and each rank's particles and peak memory.
   const EnergyTotals e1 = energy_totals(sim.particles, sim.materials, sim.gravity);
+  const double particles = global::sum(double(sim.particles.size()));
+  std::vector<std::array<double, 2>> per_rank{{double(sim.particles.size()), peak_rss_bytes()}};
+  global::concatenate(per_rank);
+#ifdef CDMPM_MPI
+  if (mpi::rank() != 0) return;
+#endif
   nlohmann::json s;
   s["scene"] = scene.name;
   s["scene_file"] = scene.path;
   s["parameters"] = scene.parameters;
   s["dim"] = dim;
-  s["particles"] = sim.particles.size();
+  s["particles"] = static_cast<uint64_t>(particles);
   s["steps"] = sim.steps();
   s["sim_time"] = sim.time();
   s["wall_time"] = t.wall;
@@ -44,9 +53,9 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
   nlohmann::json phases;
   for (size_t k = 0; k < phase_names.size(); ++k) phases[phase_names[k]] = sim.phase_timer().seconds(static_cast<Phase>(k));
   s["phase_seconds"] = phases;
-  const double peak_memory = peak_rss_bytes();
-  s["peak_memory_bytes"] = peak_memory;
-  s["bytes_per_particle"] = peak_memory / std::max<double>(1, double(sim.particles.size()));
+  // A distributed run: rank 0's (every rank's below).
+  s["peak_memory_bytes"] = per_rank[0][1];
+  s["bytes_per_particle"] = per_rank[0][1] / std::max(1.0, per_rank[0][0]);
   s["mass_change"] = (e1.mass - e0.mass) / e0.mass;
   s["energy"] = energy_json(e1);
   s["energy_initial"] = energy_json(e0);
@@ -75,6 +84,10 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
                         {"max_imbalance_after_first_repartition", d->max_imbalance_repartitioned()},
                         {"rank0_halo_bytes", d->halo.halo_bytes()},
                         {"rank0_migrated_particles", d->migrated()}};
+  if (sim.domain()) {
+    nlohmann::json& d = s["distributed"];
+    for (const auto& [n, bytes] : per_rank) d["particles_per_rank"].push_back(n), d["peak_memory_bytes_per_rank"].push_back(bytes);
+  }
 #endif
   s["precision"] = sizeof(Real) == 8 ? "double" : "single";
   s["version"] = CDMPM_VERSION;

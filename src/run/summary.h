@@ -22,6 +22,8 @@ struct RunTimes {
   double wall = 0, setup = 0, loop_end = 0, particle_steps = 0;
 };
 
+// Collective in a distributed run (every rank calls it; rank 0 writes): the final energies and counts are reduced
+// over the ranks' particles in place, and `hazard` need only be given on rank 0.
 template <int dim>
 void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const IcebergTracker<dim>& icebergs,
                    const EnergyTotals& e0, const RunTimes& times, const RunResult& result, const RunOptions& options,

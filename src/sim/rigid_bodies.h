@@ -118,8 +118,10 @@ class RigidBodies {
   std::vector<RigidBody<dim>> bodies;
 
   // One body per rigid body in the scene, with its initial state measured from the seeded particles; its
-  // particles' velocities are projected (held bodies set at rest) so the state is consistent from t = 0.
-  void init(const Scene& scene, const std::vector<Material>& materials, Particles<dim>& p, Real dx) {
+  // particles' velocities are projected (held bodies set at rest) so the state is consistent from t = 0. `keys`: as
+  // for project().
+  void init(const Scene& scene, const std::vector<Material>& materials, Particles<dim>& p, Real dx,
+            const std::vector<uint64_t>* keys = nullptr) {
     bodies.clear();
     body_of_.assign(materials.size(), -1);
     for (const BodySpec& b : scene.bodies) {
@@ -134,7 +136,7 @@ class RigidBodies {
       body_of_[b.material_index] = static_cast<int>(bodies.size());
       bodies.push_back(body);
     }
-    project(p, 0.0, 0, dx);
+    project(p, 0.0, 0, dx, keys);
   }
 
   // Index into `bodies` of the body made of `material`, -1 if that material is not rigid.

@@ -14,6 +14,13 @@ namespace {
 template <int dim>
 using DVec = Eigen::Matrix<double, dim, 1>;
 
+// The run through the scene's particles in seeding order: how many so far, and which this process keeps.
+template <int dim>
+struct Seeding {
+  const SeedFilter<dim>& keep;
+  uint64_t seeded = 0;
+};
+
 // A rigid body's shape turned by its tilt about its hinge (or centre).
 template <int dim>
 struct Tilted {
@@ -37,13 +44,15 @@ template <int dim>
 class BodySeeder {
  public:
   BodySeeder(const Scene& scene, const BodySpec& body, const std::vector<Material>& materials,
-             const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, bool crevasse_water = false)
+             const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Seeding<dim>& seeding,
+             bool crevasse_water = false)
       : scene_(scene),
         body_(body),
         crevasse_water_(crevasse_water),
         material_index_(crevasse_water ? body.crevasses->water_material_index : body.material_index),
         mat_(materials[material_index_]),
         boundaries_(boundaries),
+        seeding_(seeding),
         self_(body) {
     n_ = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
     h_ = scene.domain.dx / n_;
@@ -90,9 +99,9 @@ class BodySeeder {
       std::optional<double> level;
       if (crevasse_water_) level = keep_crevasse_water(column);
       else if (body_.crevasses) cut_crevasse(column);
-      seed_column(column, particles, level);
+      seed_column(column, particles, &seeding_, level);
       if (!bed_column.empty()) {
-        seed_column(bed_column, bed->particles);
+        seed_column(bed_column, bed->particles, nullptr);
         bed->normal.insert(bed->normal.end(), bed_normal.begin(), bed_normal.end());
       }
       int a = up - 1;
@@ -159,8 +168,9 @@ class BodySeeder {
   }
 
   // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level
-  // (`level_override`, when given, for the water in a crevasse).
-  void seed_column(const std::vector<DVec<dim>>& column, Particles<dim>& particles,
+  // (`level_override`, when given, for the water in a crevasse). With `seeding`, each particle gets the next index
+  // of the one-process array as its id, and only those seeding.keep accepts are added (the bed layer's: all).
+  void seed_column(const std::vector<DVec<dim>>& column, Particles<dim>& particles, Seeding<dim>* seeding,
                    std::optional<double> level_override = std::nullopt) const {
     constexpr int up = vertical_axis<dim>;
     const double g = -static_cast<Real>(scene_.gravity[up]);
@@ -173,13 +183,15 @@ class BodySeeder {
     if (level_override) level = *level_override;
     const Real rho0 = mat_.density();
     for (const auto& x : column) {
+      Vec<dim> xp = x.template cast<Real>();
+      if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
+      const uint64_t index = seeding ? seeding->seeded++ : 0;
+      if (seeding && seeding->keep && !seeding->keep(index, xp)) continue;
       const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
       const InitialState<dim> st =
           mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0), static_cast<Real>(body_.lateral_stress_ratio)); });
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
       const Real V0 = cell_volume_ / st.J;
-      Vec<dim> xp = x.template cast<Real>();
-      if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
       // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
       Vec<dim> vp = v0_ + G_ * (xp - centre_);
       if (body_.solitary) {  // sim/solitary_wave.h
@@ -189,6 +201,7 @@ class BodySeeder {
       const MaterialId id = static_cast<MaterialId>(material_index_);
       if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha);
       else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);
+      if (seeding) particles.id[solid ? particles.solid_count() - 1 : particles.size() - 1] = index;
     }
   }
 
@@ -198,6 +211,7 @@ class BodySeeder {
   int material_index_;
   const Material& mat_;
   const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries_;
+  Seeding<dim>& seeding_;
   Tilted<dim> self_;
   std::vector<Tilted<dim>> rigid_shapes_;
   int n_ = 1;
@@ -211,19 +225,20 @@ class BodySeeder {
 }  // namespace
 
 template <int dim>
-void seed_bodies(const Scene& scene, std::vector<Material>& materials,
+uint64_t seed_bodies(const Scene& scene, std::vector<Material>& materials,
                  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
-                 BedLayer<dim>* bed) {
+                 BedLayer<dim>* bed, const SeedFilter<dim>& keep) {
+  Seeding<dim> seeding{keep, 0};
   for (const bool solids : {true, false})
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
       const BodySpec& b = scene.bodies[i];
       Material& mat = materials[b.material_index];
       if (mat.traits().solid_state != solids) continue;
-      const BodySeeder<dim> seeder(scene, b, materials, boundaries);
+      const BodySeeder<dim> seeder(scene, b, materials, boundaries, seeding);
       mat.half_spacing = std::max(mat.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
-      const size_t before = particles.size();
+      const uint64_t before = seeding.seeded;
       seeder.seed(particles, bed);
-      if (particles.size() == before)
+      if (seeding.seeded == before)
         throw SceneError(scene.path + ": bodies[" + std::to_string(i) + "]: seeds no particle (its shape is smaller "
                          "than the particle spacing, or lies inside its holes, a rigid body or the solid of a boundary)");
     }
@@ -232,15 +247,17 @@ void seed_bodies(const Scene& scene, std::vector<Material>& materials,
     const BodySpec& b = scene.bodies[i];
     if (!b.crevasses || b.crevasses->water_depth <= 0) continue;
     Material& water = materials[b.crevasses->water_material_index];
-    const BodySeeder<dim> seeder(scene, b, materials, boundaries, true);
+    const BodySeeder<dim> seeder(scene, b, materials, boundaries, seeding, true);
     water.half_spacing = std::max(water.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
     seeder.seed(particles, nullptr);
   }
+  particles.next_id = seeding.seeded;
+  return seeding.seeded;
 }
 
-template void seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&, Particles<2>&,
-                           BedLayer<2>*);
-template void seed_bodies<3>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<3>>>&, Particles<3>&,
-                           BedLayer<3>*);
+template uint64_t seed_bodies<2>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<2>>>&,
+                                  Particles<2>&, BedLayer<2>*, const SeedFilter<2>&);
+template uint64_t seed_bodies<3>(const Scene&, std::vector<Material>&, const std::vector<std::unique_ptr<Boundary<3>>>&,
+                                  Particles<3>&, BedLayer<3>*, const SeedFilter<3>&);
 
 }  // namespace cdmpm

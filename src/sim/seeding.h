@@ -15,9 +15,15 @@
 //           balance by the full overburden and the ice near it responds elastically from the first step).
 // The particle's current volume is (dx/n)^dim; its reference volume is that over J, its mass rho0 times that.
 // Solid-state bodies are seeded first, so that adding their particles is an append (core/particles.h).
-// Particles get consecutive ids in seeding order.
+// Particles get consecutive ids in seeding order: a particle's id is its index in the one-process array.
+// A distributed run seeds twice (sim/simulation.cpp): once keeping nothing, to count the particles of every block
+// for the first partition, then keeping only the particles of this rank's blocks (`keep`), so no rank ever holds
+// the whole scene; the bed layer of a well-balanced bed is kept whole on every rank (a layer of particles along
+// the bed, split later: parallel/bed_part.h).
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -28,12 +34,19 @@
 
 namespace cdmpm {
 
+// Which particles a process keeps, asked with each particle's index in the one-process array (its id) and its
+// position; empty: all.
+template <int dim>
+using SeedFilter = std::function<bool(uint64_t index, const Vec<dim>& x)>;
+
 // Seeds every body of the scene; sets each material's half particle spacing. Throws SceneError naming a body
 // that seeds no particle. With `bed`, the lattice points of fluid bodies in a boundary's bed layer
-// (Boundary::in_bed_layer) are seeded into it, in the same state (sim/bed_layer.h).
+// (Boundary::in_bed_layer) are seeded into it, in the same state (sim/bed_layer.h). With `keep`, only the particles
+// it accepts are added, with their ids. Returns the number of particles the scene seeds (kept or not), which is
+// particles.next_id after.
 template <int dim>
-void seed_bodies(const Scene& scene, std::vector<Material>& materials,
-                 const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
-                 BedLayer<dim>* bed = nullptr);
+uint64_t seed_bodies(const Scene& scene, std::vector<Material>& materials,
+                     const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
+                     BedLayer<dim>* bed = nullptr, const SeedFilter<dim>& keep = {});
 
 }  // namespace cdmpm

@@ -11,6 +11,7 @@
 #include "grid/grid_update.h"
 #include "material/constitutive_update.h"
 #include "material/stress.h"
+#include "parallel/decomposition.h"
 #include "parallel/reduction.h"
 #include "sim/advect.h"
 #include "sim/seeding.h"
@@ -33,11 +34,17 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   sinks = s.sinks;
   for (const auto& b : boundaries)
     for (const SinkSpec& k : b->sinks()) sinks.push_back(k);
-  seed_bodies<dim>(s, materials, boundaries, particles, &bed_);
-  if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
-  rigid.init(s, materials, particles, grid.dx);
 #ifdef CDMPM_MPI
-  if (mpi::active()) make_domain();
+  if (mpi::active()) seed_distributed();
+  else
+#endif
+    seed_bodies<dim>(s, materials, boundaries, particles, &bed_);
+  if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
+#ifdef CDMPM_MPI
+  if (domain_) domain_->adopt_seeded(particles, grid, &bed_);
+  rigid.init(s, materials, particles, grid.dx, domain_ ? &domain_->keys() : nullptr);
+#else
+  rigid.init(s, materials, particles, grid.dx);
 #endif
   crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
@@ -72,29 +79,32 @@ void Simulation<dim>::settle_elastically(double duration, Real damping) {
 }
 
 template <int dim>
-void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_reference) {
+void Simulation<dim>::restore(double t, long long step_count, Real wave_dt_reference, std::vector<uint64_t>* keys) {
   time_ = t;
   steps_ = step_count;
   wave_dt_at_start = wave_dt_reference;
 #ifdef CDMPM_MPI
-  // The loaded particles (every rank read the whole checkpoint) are the one-process array: partitioned again, each
-  // rank keeping its own, their keys their order.
-  if (domain_) make_domain();
+  // The loaded particles are this rank's share of the checkpoint (`keys`: their order keys): partitioned again for
+  // the counts over all ranks, each particle moved to its owner.
+  if (domain_) domain_->adopt_loaded(particles, std::move(*keys), grid, &bed_);
+#else
+  (void)keys;
 #endif
   update_speeds();
 }
 
 #ifdef CDMPM_MPI
-// Partitions the particles (all of the scene on every rank) and keeps this rank's, with the blocks of the
-// boundaries' mirror pairs kept on one rank (parallel/partition.h), and this rank's part of the bed layer
-// (parallel/bed_part.h; bed_ keeps the whole layer, which every rank seeded).
+// The scene seeded without any rank holding all of it: a first pass counts the particles of every block (keeping
+// none), the blocks are partitioned for those counts with the blocks of the boundaries' mirror pairs kept on one
+// rank (parallel/partition.h), and a second pass keeps this rank's particles (sim/seeding.h). The bed layer of
+// the well-balanced beds is seeded whole on every rank (bed_; this rank's part: parallel/bed_part.h).
 template <int dim>
-void Simulation<dim>::make_domain() {
-  std::vector<std::array<size_t, 2>> joined;
-  for (const auto& b : boundaries)
-    for (const auto& [i, j] : b->mirror_node_pairs(grid))
-      joined.push_back({grid.block_index(grid.block_of(i)), grid.block_index(grid.block_of(j))});
-  domain_ = std::make_unique<Domain<dim>>(particles, grid, domain_size, joined, &bed_);
+void Simulation<dim>::seed_distributed() {
+  domain_ = std::make_unique<Domain<dim>>(grid, domain_size, joined_blocks(boundaries, grid));
+  domain_->partition_seeded(seeded_per_block(scene, materials, boundaries, grid), grid);
+  const int me = mpi::rank();
+  seed_bodies<dim>(scene, materials, boundaries, particles, &bed_,
+                   [&](uint64_t, const Vec<dim>& x) { return domain_->owner_at(x, grid) == me; });
 }
 #endif
 

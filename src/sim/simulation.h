@@ -55,8 +55,9 @@ class Simulation {
   // Checks the state after a step; returns a message saying where and why if it is unstable.
   std::optional<std::string> check_state() const;
   // Sets the clock and the time-step reference of a run resumed from a checkpoint (whose particles were loaded
-  // into `particles`), and recomputes the speeds from the particle state.
-  void restore(double t, long long step_count, Real wave_dt_reference);
+  // into `particles`: all of them, or in a distributed run this rank's share with their order `keys`), and
+  // recomputes the speeds from the particle state.
+  void restore(double t, long long step_count, Real wave_dt_reference, std::vector<uint64_t>* keys = nullptr);
   double time() const { return time_; }
   long long steps() const { return steps_; }
   const PhaseTimer& phase_timer() const { return timer_; }
@@ -104,7 +105,7 @@ class Simulation {
   void update_speeds();
   void settle_elastically(double duration, Real damping);
 #ifdef CDMPM_MPI
-  void make_domain();
+  void seed_distributed();
 #endif
 
   double time_ = 0;

@@ -82,6 +82,43 @@ TEST(CheckpointPieces, MergeByKeyIntoTheOneProcessArray) {
   EXPECT_EQ(back.next_id, 107u);
 }
 
+// The particles of `keys` in the one-process array, in that order, as the reader of a share returns them.
+void expect_keys(const Particles<2>& back, const std::vector<uint64_t>& got, const std::vector<uint64_t>& keys) {
+  EXPECT_EQ(got, keys);
+  const Particles<2> all = whole();
+  ASSERT_EQ(back.size(), keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    EXPECT_EQ(back.id[i], all.id[keys[i]]);
+    EXPECT_EQ(back.x[i], all.x[keys[i]]);
+    EXPECT_EQ(back.J[i], all.J[keys[i]]);
+    if (keys[i] < 3) EXPECT_EQ(back.F[i], all.F[keys[i]]);
+  }
+}
+
+// A distributed run's rank reads only its share (the pieces k with k % ranks == rank, merged by key): a piece it does
+// not read may even be missing. Of a one-file checkpoint it keeps its range of the one-process array.
+TEST(CheckpointPieces, ARankReadsOnlyItsShare) {
+  Written w;
+  write_two_ranks(w, {{0, 4}, {1, 2, 5}, {3, 6}});
+  std::filesystem::remove(w.dir / "checkpoint_a_r1.bin");
+  CheckpointShare first{0, 2, {}};
+  Particles<2> back;
+  read_checkpoint(w.manifest, back, &first);
+  expect_keys(back, first.keys, {0, 3, 4, 6});
+  EXPECT_EQ(back.solid_count(), 1u);
+  CheckpointShare second{1, 2, {}};
+  EXPECT_THROW(read_checkpoint(w.manifest, back, &second), CheckpointError);  // its piece is the missing one
+
+  testing::TempDir dir;
+  Particles<2> all = whole();
+  write_checkpoint(dir / "one.bin", all, CheckpointMeta{});
+  CheckpointShare middle{1, 3, {}};
+  Particles<2> part;
+  read_checkpoint(dir / "one.bin", part, &middle);
+  expect_keys(part, middle.keys, {2, 3});  // [7 / 3, 14 / 3)
+  EXPECT_EQ(part.solid_count(), 1u);
+}
+
 TEST(CheckpointPieces, RefuseMissingForeignMisnamedAndOverlappingPieces) {
   {
     Written w;

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "cli_helpers.h"
+#include "run/run_estimate.h"
+#include "scene/scene_loader.h"
 
 namespace cdmpm::testing {
 namespace {
@@ -64,6 +66,40 @@ TEST(RunLimits, CheckReportsEachScenesEstimate) {
   const auto bad = run_cdmpm({"check", kScene, source_path("tests/bad_scenes/dx_negative.json")});
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("calving_front_2d.json: valid"), std::string::npos) << "the good scene is still reported";
+}
+
+// A distributed run's machine holds only its ranks' share of the particles (run/run_estimate.h): a scene too big
+// for one machine is refused on one rank and accepted as 1 rank of 64 (its lattice tables and program counted
+// once per rank here).
+TEST(RunLimits, ADistributedRunNeedsItsMachinesShare) {
+  const double machine = machine_memory_bytes();
+  if (machine <= 0) GTEST_SKIP() << "no /proc/meminfo";
+  const Scene scene = load_scene(kScene, {"parameters.dx=0.05"});
+  const RunEstimate e = estimate_run(scene);
+  ASSERT_GT(e.memory_bytes, 0.9 * machine) << "the scene must be too big for this machine";
+  ASSERT_LT(e.memory_bytes / 64, 0.5 * machine);
+  EXPECT_THROW(check_run_fits(scene, e), SceneError);
+  EXPECT_THROW(check_run_fits(scene, e, false, 64, 64), SceneError);  // all 64 ranks on this machine
+  EXPECT_NO_THROW(check_run_fits(scene, e, false, 1, 64));
+}
+
+// `cdmpm run --dry-run --ranks N` (run/run_plan.h): the plan as JSON, the particles of the ranks adding up to the
+// scene's, and nothing written; a scene over the machine's limits (here the frame limit) is planned all the same.
+TEST(RunLimits, DryRunPlansWithoutRunning) {
+  TempDir dir;
+  const auto r = run_cdmpm({"run", kScene, "--out", dir / "out", "--dry-run", "--ranks", "3", "--set", "parameters.dx=40"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json plan = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+  EXPECT_EQ(plan["ranks"], 3);
+  ASSERT_EQ(plan["per_rank"].size(), 3u);
+  uint64_t sum = 0;
+  for (const auto& rank : plan["per_rank"]) sum += rank["particles"].get<uint64_t>();
+  EXPECT_EQ(sum, plan["particles"].get<uint64_t>());
+  EXPECT_GT(sum, 0u);
+  EXPECT_FALSE(fs::exists(dir / "out")) << "a dry run writes nothing";
+  const auto big = run_cdmpm({"run", kScene, "--out", dir / "out", "--dry-run", "--ranks", "64", "--set",
+                              "parameters.dx=40", "--set", "time.frame_interval=1e-12"});
+  EXPECT_EQ(big.exit_code, 0) << big.output;
 }
 
 }  // namespace
