@@ -1,25 +1,27 @@
 // rigid_bodies.h - rigid bodies made of material points, coupled to the other materials through the shared grid.
 //
 // Each rigid body is the set of particles of one rigid material (scene material type "rigid"; the loader lets a
-// rigid material make only one body). Its particles scatter into the bodies' own grid velocity field, which
-// meets the other materials' field in a frictionless contact (sim/rigid_contact.h: normal velocities exchanged
-// where the body approaches the water, tangential ones free), and read their velocities back from it. After
-// that grid-to-particle transfer, project() replaces their velocities by the rigid motion that has the same
-// linear and angular momentum:
+// rigid material make only one body). Its particles carry mass, momentum and a penalty pressure (below) to the
+// grid like any other particle, so the body and the water share the velocity of every node they both touch
+// (no slip). After each grid-to-particle transfer, project() replaces their velocities by the rigid motion that
+// has the same linear and angular momentum:
 //   v_p = V + omega x (x_p - x_c),   C_p = [omega]_x (the skew matrix of omega, the rigid velocity gradient),
 //   V = P / M,  P = sum_p m_p v_p,  M = sum_p m_p,  x_c = sum_p m_p x_p / M,
 //   omega = I^-1 L,  L = sum_p [ m_p r_p x v_p + m_p D axial(C_p - C_p^T) ],  r_p = x_p - x_c,
 //   I = sum_p m_p [ (|r_p|^2 + 2 D) 1 - r_p r_p^T ]   (2D: I and L are scalars, I = sum_p m_p (|r_p|^2 + 2 D)).
 // The terms with D = dx^2/4 (the APIC inertia tensor of quadratic B-splines, Jiang et al. 2015, sec. 5.3) are
 // the angular momentum and inertia that a particle's affine velocity C_p carries to the grid: with them the
-// projection keeps exactly the angular momentum that p2g/g2p exchange through the grid.
+// projection keeps exactly the angular momentum that p2g/g2p exchange with the water.
 // A hinged body turns about its fixed pivot o only: v_p = omega x (x_p - o), omega = I_o^-1 L_o with L and I
 // taken about o (the pivot's reaction changes the linear momentum, not the angular momentum about o).
 // A held body (time < hold_until) is at rest: v_p = 0, C_p = 0.
-// The rigid material's pressure (material/rigid.h) no longer acts: the contact keeps the water out of the body,
-// and the water's own pressure pushes on it. (Before, body and water shared one velocity field, and the body
-// dragged a layer of water a kernel width thick with it, tangentially too: buoyancy-driven motions were several
-// times too slow at coarse resolution; docs/validation.md, buoyancy.)
+// Before its C_p is replaced, each particle's volume ratio follows the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
+// so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
+// pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
+// (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
+// expansion. (Known limit, docs/validation.md: through the shared nodes the body drags the water next to it,
+// which slows buoyancy-driven motions at coarse resolution. A pressure taken instead from the water around the
+// body, continuous across its surface, fed back on the water it compressed and made a surfacing body unstable.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity
@@ -31,8 +33,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -40,7 +40,6 @@
 #include "material/material.h"
 #include "parallel/reduction.h"
 #include "scene/scene.h"
-#include "sim/rigid_contact.h"
 
 namespace cdmpm {
 
@@ -116,8 +115,6 @@ template <int dim>
 class RigidBodies {
  public:
   using A = RigidAlgebra<dim>;
-  using Spin = typename RigidBody<dim>::Spin;
-  static constexpr int rot_dofs = RigidBody<dim>::rot;
   std::vector<RigidBody<dim>> bodies;
 
   // One body per rigid body in the scene, with its initial state measured from the seeded particles; its
@@ -145,7 +142,7 @@ class RigidBodies {
 
   // After g2p at time `time`: replaces the rigid particles' v and C by their bodies' rigid motion. `keys`: in a
   // distributed run, the order keys of this rank's particles (parallel/migration.h); null when p is the whole set.
-  void project(Particles<dim>& p, double time, Real /*dt*/, Real dx, const std::vector<uint64_t>* keys = nullptr) {
+  void project(Particles<dim>& p, double time, Real dt, Real dx, const std::vector<uint64_t>* keys = nullptr) {
     if (bodies.empty()) return;
     const Real D = dx * dx / 4;
     const size_t n = p.size(), nb = bodies.size();
@@ -204,57 +201,10 @@ class RigidBodies {
       const int b = body_of[p.material[q]];
       if (b < 0) continue;
       const RigidBody<dim>& B = bodies[b];
+      p.J[q] = std::min(Real(1), p.J[q] * (Real(1) + dt * p.C[q].trace()));
       p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
       p.C[q] = A::skew(B.omega);
     }
-  }
-
-  // After the grid update of the other materials at time `time`: the bodies' frictionless contact with them
-  // (sim/rigid_contact.h), from each body's mass, centre, inertia (summed over its particles in the one-process
-  // order, in double, as in project()) and motion at the start of the step; sets the field that project() then
-  // reads through contact.gather(). `owned`: a distributed run's own grid nodes; `keys` as for project().
-  void contact(RigidContact<dim>& contact, const Particles<dim>& p, Grid<dim>& g, const Vec<dim>& gravity, Real dt,
-               double time, const std::vector<std::unique_ptr<Boundary<dim>>>& bcs,
-               const std::function<bool(size_t)>& owned, const std::vector<uint64_t>* keys = nullptr) {
-    if (bodies.empty()) return;
-    using C = RigidContact<dim>;
-    const Real D = g.dx * g.dx / 4;
-    const size_t nb = bodies.size();
-    const std::vector<Sample> s = samples_in_order(p, keys);
-    std::vector<typename C::Input> in;
-    in.reserve(s.size());
-    std::vector<double> mass(nb, 0.0);
-    std::vector<Eigen::Matrix<double, dim, 1>> first(nb, Eigen::Matrix<double, dim, 1>::Zero());
-    for (const Sample& q : s) {
-      in.push_back({q.body, q.mass, q.x});
-      mass[q.body] += q.mass;
-      first[q.body] += q.mass * q.x.template cast<double>();
-    }
-    std::vector<typename C::Body> state(nb);
-    for (size_t b = 0; b < nb; ++b) {
-      const RigidBody<dim>& B = bodies[b];
-      typename C::Body& S = state[b];
-      S.mass = mass[b];
-      S.centre = (first[b] / mass[b]).template cast<Real>();
-      S.hinged = B.hinged;
-      S.held = time < B.hold_until;
-      S.origin = B.hinged ? B.pivot : S.centre;
-      S.inertia.setZero();
-    }
-    for (const Sample& q : s) state[q.body].inertia += A::inertia(q.mass, q.x - state[q.body].origin, D).template cast<double>();
-    for (size_t b = 0; b < nb; ++b) {
-      const RigidBody<dim>& B = bodies[b];
-      typename C::Body& S = state[b];
-      S.s_star.template tail<rot_dofs>() = B.omega.template cast<double>();
-      if (B.hinged) {  // gravity's torque about the hinge
-        const Spin torque = A::cross(S.centre - B.pivot, static_cast<Real>(S.mass) * gravity);
-        S.s_star.template tail<rot_dofs>() += static_cast<double>(dt) * S.inertia.ldlt().solve(torque.template cast<double>());
-      } else {
-        S.s_star.template head<dim>() = (B.velocity + dt * gravity).template cast<double>();
-      }
-    }
-    contact.scatter(in, g);
-    contact.solve(state, g, bcs, owned);
   }
 
   // Moves the rigid particles and the bodies' state rigidly over dt with the velocities set by project(), and

@@ -229,17 +229,6 @@ void Simulation<dim>::grid_update_phase(Real dt) {
     b->prepare(*this, dt);
   }
   grid_update(grid, gravity, dt, boundaries);
-  if (rigid.bodies.empty()) return;
-  // The rigid bodies' contact with the other materials (sim/rigid_contact.h); a distributed run sums its own nodes.
-  std::function<bool(size_t)> owned = [](size_t) { return true; };
-  const std::vector<uint64_t>* keys = nullptr;
-#ifdef CDMPM_MPI
-  if (domain_) {
-    keys = &domain_->keys();
-    owned = [this](size_t k) { return domain_->partition().owner(grid.block_index(grid.block_of(grid.node(k)))) == mpi::rank(); };
-  }
-#endif
-  rigid.contact(contact_, particles, grid, gravity, dt, time_, boundaries, owned, keys);
 }
 
 // Unfold in the reverse order of folding (the adjoint), so a ghost that is folded twice, e.g. at the corner
@@ -252,11 +241,8 @@ void Simulation<dim>::boundary_unfold() {
 #endif
 }
 
-// The rigid particles read their bodies' field (sim/rigid_contact.h; g2p gave them the other materials'), then
-// take their bodies' rigid motion.
 template <int dim>
 void Simulation<dim>::rigid_projection(Real dt) {
-  if (!rigid.bodies.empty()) contact_.gather(particles, grid, rigid_material_);
 #ifdef CDMPM_MPI
   if (domain_) return rigid.project(particles, time_, dt, grid.dx, &domain_->keys());
 #endif

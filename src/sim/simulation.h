@@ -112,7 +112,6 @@ class Simulation {
   Real material_dt_ = 0;                 // smallest of the materials' own time-step limits
   std::vector<uint8_t> rigid_material_;  // per material: its particles are moved by a rigid body
   ParticleBins bins_;
-  RigidContact<dim> contact_;      // the rigid bodies' grid field and its contact with the others (sim/rigid_contact.h)
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   PhaseTimer timer_;

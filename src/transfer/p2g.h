@@ -9,8 +9,6 @@
 // in its moving-least-squares form. With dt = 0 this is the pure APIC transfer, which conserves mass,
 // linear and angular momentum exactly.
 //
-// Rigid particles are left out: they scatter into their bodies' own field (sim/rigid_contact.h).
-//
 // Race-free and deterministic: blocks of one colour run in parallel, colours in sequence (particle_bins.h).
 // Each block's particles scatter into a dense patch that is then added to the sparse grid (block_patch.h).
 #pragma once
@@ -33,11 +31,8 @@ void scatter_bin(const Particles<dim>& p, const std::vector<Material>& materials
                  const Grid<dim>& g, uint32_t j, Real dt, PatchAccumulator<dim>& acc) {
   const Real Dinv = Real(4) * g.inv_dx * g.inv_dx;
   const BlockPatch<dim> patch(g, bins.blocks[j]);
-  std::array<uint8_t, 256> rigid{};  // per material id (uint8_t): its particles are rigid
-  for (size_t mi = 0; mi < materials.size() && mi < rigid.size(); ++mi) rigid[mi] = materials[mi].traits().rigid;
   for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
     const uint32_t q = bins.order[k];
-    if (rigid[p.material[q]]) continue;
     const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
     const Real m = p.mass[q];
     Mat<dim> affine = m * p.C[q];
