@@ -36,6 +36,8 @@ CASES=(
   "lab_cs_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|as lab_bf_2d (40k particles)"
   "lab_gf_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|as lab_bf_2d (41k particles)"
   "rigid_rise_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s, 540 steps of 12.8k particles; frames turned on)"
+  "blob_rise_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s, about 510 steps of 12.8k particles; frames turned on)"
+  "ice_rise_2d|output.frames=true time.end=0.05 time.frame_interval=0.025|the ice block's start (5700 steps to 0.3 s at its P-wave time step; ~1000 to 0.05 s)"
   "sliding_block_2d|time.end=2 time.frame_interval=0.5|the push starts; ~1000 steps of 20k particles (the first iceberg needs 100+ s: not cheap)"
   "solitary_runup_2d|output.frames=true time.end=1 time.frame_interval=0.25|the solitary wave travels 3 h along the tank (hazard record, solitary_wave initial state); ~1100 steps of 12.6k particles (full run 6.5 s; frames turned on)"
   "wave_celerity_2d|output.frames=true time.end=0.4 time.frame_interval=0.1|the released box starts the wave; ~680 steps of 22k particles (full run 4.5 s; frames turned on)"

@@ -19,9 +19,11 @@
 // so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
 // pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
 // (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
-// expansion. (Known limit, docs/validation.md: through the shared nodes the body drags the water next to it,
-// which slows buoyancy-driven motions at coarse resolution. A pressure taken instead from the water around the
-// body, continuous across its surface, fed back on the water it compressed and made a surfacing body unstable.)
+// expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside
+// it, tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are
+// slow at coarse resolution. A pressure taken instead from the water around the body, continuous across its
+// surface, fed back on the water it compressed and made a surfacing body unstable; a frictionless two-field
+// contact, commit 2d18ec7, let the water creep half a cell into the body, which then floated 8 % too deep.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity

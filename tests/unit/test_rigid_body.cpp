@@ -1,13 +1,18 @@
 // test_rigid_body.cpp - rigid bodies (sim/rigid_bodies.h) against mechanics: free fall in air with g, exact
 // conservation of linear and angular momentum of an isolated spinning block (2D and 3D), a hinged bar's
-// initial angular acceleration m g d / I_o, a held block at rest until its release, and a block lighter than
-// water floating at the draft of Archimedes' principle.
+// initial angular acceleration m g d / I_o, a held block at rest until its release, a block lighter than
+// water floating at the draft of Archimedes' principle, and the initial rise of a submerged block against potential
+// flow, a = (rho_w - rho_b) V g / (m + m_a), m_a = C_A rho_w pi (D/2)^2, C_A = 1.51 for a square (DNV-RP-C205
+// table A-1; Brennen 1982: m_a = 4.754 rho_w (D/2)^2): closer under refinement. Issue 20's criteria, not met yet
+// (docs/validation.md, buoyancy), are disabled tests: 15 % at D/16, and floating at the draft after rising.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
+#include <string>
 
 #include "cli_helpers.h"
 #include "scene/scene_loader.h"
@@ -178,13 +183,9 @@ TEST(RigidBody, HeldBlockIsReleasedAtHoldTime) {
   EXPECT_NEAR(z0 - sim.rigid.bodies[0].centre[1], 0.5 * g * s * s, 0.02 * 0.5 * g * s * s);
 }
 
-// A block of density 920 and height H_b, released with its bottom at the still water level in a 2 m wide
-// tank, floats and comes to rest with draft d = (920 / 1000) H_b (Archimedes) within 5 %: draft = water level
-// far from the block (gauge, absolute height) - bottom of the block (centre - H_b / 2), averaged over the
-// last second; the block is then at rest (its speed is small against the heave speed sqrt(g d)).
-TEST(RigidBody, LightBlockFloatsAtArchimedesDraft) {
-  using namespace cdmpm::testing;
-  const double H_b = 0.2, rho_b = 920, rho_w = 1000, level = 0.5;
+// A 2 m wide tank of still water 0.5 m deep (dx = 0.025 m) with a rigid block of density 920, 0.4 m wide, between
+// heights y0 and y1.
+json float_tank(double y0, double y1) {
   json j = json::parse(R"({
     "dim": 2,
     "domain": {"size": [2.0, 1.0], "dx": 0.025},
@@ -194,17 +195,41 @@ TEST(RigidBody, LightBlockFloatsAtArchimedesDraft) {
       "block": {"type": "rigid", "density": 920, "bulk_modulus": 4e5}
     },
     "bodies": [
-      {"material": "block", "particles_per_cell": 4, "shape": {"type": "box", "min": [0.8, 0.45], "max": [1.2, 0.65]}},
+      {"material": "block", "particles_per_cell": 4, "shape": {"type": "box", "min": [0.8, 0], "max": [1.2, 0]}},
       {"material": "water", "particles_per_cell": 4, "shape": {"type": "box", "min": [0, 0], "max": [2.0, 0.5]}}
     ],
-    "boundaries": [{"type": "walls", "condition": "slip", "faces": ["x-", "x+", "y-"]}],
+    "boundaries": [{"type": "walls", "condition": "slip", "faces": ["x-", "x+", "y-"]}]
+  })");
+  j["bodies"][0]["shape"]["min"][1] = y0;
+  j["bodies"][0]["shape"]["max"][1] = y1;
+  return j;
+}
+
+// The block of float_tank, of height H_b, floats at the draft of Archimedes' principle, (920 / 1000) H_b, within
+// 5 %, and is then at rest (its largest speed small against the heave speed sqrt(g d)).
+void expect_archimedes_draft(double draft, double speed, double H_b) {
+  const double expected = 920.0 / 1000.0 * H_b;
+  std::printf("draft %.5f m (Archimedes %.5f m), largest speed over the last second %.5f m/s\n", draft, expected, speed);
+  EXPECT_NEAR(draft, expected, 0.05 * expected);
+  EXPECT_LT(speed, 0.05 * std::sqrt(g * expected));
+}
+
+// A block of density 920 and height H_b, released with its bottom at the still water level in a 2 m wide
+// tank, floats and comes to rest with draft d = (920 / 1000) H_b (Archimedes) within 5 %: draft = water level
+// far from the block (gauge, absolute height) - bottom of the block (centre - H_b / 2), averaged over the
+// last second; the block is then at rest (its speed is small against the heave speed sqrt(g d)).
+TEST(RigidBody, LightBlockFloatsAtArchimedesDraft) {
+  using namespace cdmpm::testing;
+  const double H_b = 0.2, level = 0.5;
+  json j = float_tank(0.45, 0.65);
+  j.update(json::parse(R"({
     "probes": {"interval": 0.05, "list": [
       {"name": "block", "type": "rigid_position", "material": "block"},
       {"name": "speed", "type": "rigid_velocity", "material": "block"},
       {"name": "angle", "type": "rigid_angle", "material": "block"},
       {"name": "level", "type": "wave_gauge", "position": [0.2], "still_level": 0}]},
     "output": {"frames": false}
-  })");
+  })"));
   ASSERT_DOUBLE_EQ(j["bodies"][0]["shape"]["max"][1].get<double>() - j["bodies"][0]["shape"]["min"][1].get<double>(), H_b);
   ASSERT_DOUBLE_EQ(j["bodies"][1]["shape"]["max"][1].get<double>(), level);
   TempDir dir;
@@ -221,11 +246,77 @@ TEST(RigidBody, LightBlockFloatsAtArchimedesDraft) {
       EXPECT_NEAR(p.at("angle")[i], 0, std::max(1e-6, 1e3 * std::numeric_limits<Real>::epsilon()));  // symmetry
       ++n;
     }
-  draft /= n;
-  const double expected = rho_b / rho_w * H_b;
-  std::printf("draft %.5f m (Archimedes %.5f m), largest speed over the last second %.5f m/s\n", draft, expected, speed);
-  EXPECT_NEAR(draft, expected, 0.05 * expected);
-  EXPECT_LT(speed, 0.05 * std::sqrt(g * expected));
+  expect_archimedes_draft(draft / n, speed, H_b);
+}
+
+// The submerged block of scenes/rigid_rise_2d.json (0.4 m square, density 920, centred 1 m deep in a 4 m x 2 m
+// pool) released at rest: its acceleration, the slope of its velocity over [0.1, 0.3] s (after the acoustic
+// start-up: sqrt(K / rho) = 32 m/s crosses the block in 0.013 s), at cell size dx.
+double rise_acceleration(double dx) {
+  const Scene scene = load_scene(std::string(CDMPM_SOURCE_DIR) + "/scenes/rigid_rise_2d.json",
+                                 {"parameters.dx=" + std::to_string(dx)});
+  Simulation<2> sim(scene);
+  double st = 0, sv = 0, stt = 0, stv = 0, n = 0;
+  for (int k = 1; k <= 30; ++k) {
+    run_until(sim, 0.01 * k);
+    const double t = sim.time(), v = sim.rigid.bodies[0].velocity[1];
+    if (t < 0.1 - 1e-9) continue;
+    st += t, sv += v, stt += t * t, stv += t * v, ++n;
+  }
+  return (n * stv - st * sv) / (n * stt - st * st);
+}
+// Potential flow: a = (rho_w - rho_b) V g / (rho_b V + C_A rho_w pi (D/2)^2) = 0.373 m/s^2.
+double potential_flow_rise() {
+  const double D = 0.4, V = D * D, rho_w = 1000, rho_b = 920, C_A = 1.51;
+  return (rho_w - rho_b) * V * g / (rho_b * V + C_A * rho_w * std::numbers::pi * D * D / 4);
+}
+
+// The initial rise approaches potential flow under refinement: closer at D/16 than at D/8, and upwards.
+TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
+  const double a_theory = potential_flow_rise();
+  const double a8 = rise_acceleration(0.05), a16 = rise_acceleration(0.025);
+  std::printf("rise acceleration %.4f (D/8), %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a8, a16, a_theory);
+  EXPECT_GT(a16, 0);
+  EXPECT_LT(std::abs(a16 - a_theory), std::abs(a8 - a_theory));
+}
+
+// Issue 20's criterion: within 15 % of potential flow at D/16. Not met yet (docs/validation.md, buoyancy: the
+// water's transfers lose momentum at every step); run with --gtest_also_run_disabled_tests.
+TEST(RigidBody, DISABLED_SubmergedBlockStartsRisingAtPotentialFlowAcceleration) {
+  const double a_theory = potential_flow_rise(), a16 = rise_acceleration(0.025);
+  std::printf("rise acceleration %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
+  EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
+}
+
+// Issue 20's second criterion: a block of density 920 and height H_b released 0.05 m under the surface of still
+// water rises, reaches the surface and floats at the draft of Archimedes' principle, (920 / 1000) H_b, within 5 %
+// (the draft: the water level 0.2 m from the left wall less the block's bottom, over the last second). Not met
+// yet: the block stalls below its floating position (docs/validation.md, buoyancy); run with
+// --gtest_also_run_disabled_tests.
+TEST(RigidBody, DISABLED_SubmergedBlockRisesAndFloatsAtArchimedesDraft) {
+  const double H_b = 0.2;
+  json j = float_tank(0.25, 0.25 + H_b);
+  j["bodies"][0]["surface_level"] = 0.5;
+  const Scene scene = scene_from_json(j, "rise_and_float.json");
+  Simulation<2> sim(scene);
+  const double t_end = 6;
+  double draft = 0, speed = 0, n = 0;
+  for (int k = 1; k <= 120; ++k) {
+    run_until(sim, 0.05 * k);
+    if (sim.time() < t_end - 1.0 - 1e-9) continue;
+    // The water level far from the block: the highest water particle in the column 0.15-0.25 m from the left wall.
+    double level = 0;
+    for (size_t q = 0; q < sim.particles.size(); ++q)
+      if (sim.particles.material[q] != sim.rigid.bodies[0].material && sim.particles.x[q][0] > 0.15 &&
+          sim.particles.x[q][0] < 0.25)
+        level = std::max(level, static_cast<double>(sim.particles.x[q][1]));
+    level += 0.25 * 0.025;  // the top particle sits a quarter cell (half a particle spacing) below the surface
+    const auto& B = sim.rigid.bodies[0];
+    draft += level - (B.centre[1] - H_b / 2);
+    speed = std::max(speed, static_cast<double>(B.velocity.norm()));
+    ++n;
+  }
+  expect_archimedes_draft(draft / n, speed, H_b);
 }
 
 }  // namespace
