@@ -1,7 +1,7 @@
 // decomposition.h - the decomposition of a scene before any particle exists (docs/architecture.md): the particles
 // the scene seeds in every block (a seeding pass that keeps none, sim/seeding.h), the blocks one rank must own
 // together (the mirror pairs of static slip boxes, parallel/partition.h), and, for a partition of those counts,
-// what each rank would hold and send in a step (DecompositionPlan). A distributed run partitions its first
+// what each rank would hold and send in a step (RankPlan, plan_ranks). A distributed run partitions its first
 // particles from these counts (sim/simulation.cpp); `cdmpm run --dry-run --ranks N` reports the plan for any N
 // without allocating the particles (run/run_plan.h). No MPI here: both builds compile it.
 //

@@ -58,7 +58,7 @@ RunEstimate estimate_run(const Scene& s) {
   e.lattice_blocks = 1;
   for (int a = 0; a < s.dim; ++a)
     e.lattice_blocks *= std::ceil((std::ceil(s.domain.size[a] / dx) + 1 + 2 * Grid<2>::ghost) / Grid<2>::block_width);
-  e.memory_bytes = e.particles * (s.dim == 3 ? 250 : 160) + 8 * e.lattice_blocks + 64e6;
+  e.memory_bytes = e.particles * bytes_per_particle(s.dim) + process_bytes(e.lattice_blocks);
   // Every particle at rest: no speed limit, the materials' rest wave speeds.
   const Real rdx = static_cast<Real>(dx);
   e.first_dt = stable_time_step(s.time, rdx, Real(0), static_cast<Real>(rest_wave_speed(s)),
@@ -66,7 +66,7 @@ RunEstimate estimate_run(const Scene& s) {
   e.steps = std::ceil((s.time.end + s.time.settle) / e.first_dt);  // the settling (time.settle) steps too
   e.frames = s.output.frames ? std::floor(s.time.end / s.time.frame_interval + 1e-9) + 1 : 0;
   e.frame_bytes = e.frames * e.particles * (s.dim == 3 ? 40 : 25);
-  e.wall_seconds = e.particles * e.steps / (s.dim == 3 ? 2e6 : 4e6);
+  e.wall_seconds = e.particles * e.steps / (2 * core_rate(s.dim));
   return e;
 }
 
@@ -81,7 +81,7 @@ std::string describe(const RunEstimate& e) {
 
 void check_run_fits(const Scene& s, const RunEstimate& whole, bool force, int ranks_here, int ranks) {
   RunEstimate e = whole;
-  const double per_process = 8 * whole.lattice_blocks + 64e6;
+  const double per_process = process_bytes(whole.lattice_blocks);
   e.memory_bytes = (whole.memory_bytes - per_process) * ranks_here / ranks + per_process * ranks_here;
   const std::string est = " (estimate: " + describe(e) + ")";
   for (int a = 0; a < s.dim; ++a)

@@ -30,6 +30,13 @@ struct RunEstimate {
   double wall_seconds = 0;
 };
 
+// The cost model of the estimate (above), also the dry run's (run/run_plan.h): a particle's bytes with its share of
+// bins, grid and buffers; what every process holds besides its particles (the lattice tables, the program); and one
+// core's particle-steps per second on this machine.
+inline double bytes_per_particle(int dim) { return dim == 3 ? 250 : 160; }
+inline double process_bytes(double lattice_blocks) { return 8 * lattice_blocks + 64e6; }
+inline double core_rate(int dim) { return dim == 3 ? 1e6 : 2e6; }
+
 RunEstimate estimate_run(const Scene& scene);
 
 // The machine's physical memory [bytes] (/proc/meminfo MemTotal; 0 if unknown).

@@ -7,6 +7,7 @@
 
 #include "boundary/boundary.h"
 #include "parallel/decomposition.h"
+#include "run/run_estimate.h"
 #include "sim/bed_layer.h"
 
 namespace cdmpm {
@@ -31,18 +32,20 @@ nlohmann::json plan(const Scene& s, const PlanOptions& o) {
   const std::vector<RankPlan> ranks = plan_ranks(blocks, counts, part, grid, MirrorZone<dim>(grid, size));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const double per_particle = dim == 3 ? 250 : 160;
-  const double core_rate = o.core_rate > 0 ? o.core_rate : (dim == 3 ? 1e6 : 2e6);
+  const double per_particle = bytes_per_particle(dim);
+  const double rate = o.core_rate > 0 ? o.core_rate : core_rate(dim);
   const double R = o.ranks;
   const double latency = o.ranks > 1 ? o.latency * (4 * (R - 1) + 6 * 2 * std::log2(R)) : 0;
   uint64_t total = 0, most = 0;
+  std::vector<uint64_t> particles;
   double most_bytes = 0, most_memory = 0, slowest = 0;
   nlohmann::json per_rank = nlohmann::json::array();
   for (size_t r = 0; r < ranks.size(); ++r) {
     const RankPlan& p = ranks[r];
-    const double memory = p.particles * per_particle + 8.0 * grid.block_count() + 2 * p.halo_bytes_sent +
-                          bed_particles * per_particle + 64e6;
-    const double step = p.particles / (core_rate * o.threads) + p.halo_bytes_sent / o.bandwidth + latency;
+    const double memory = (p.particles + bed_particles) * per_particle + process_bytes(grid.block_count()) +
+                          2 * p.halo_bytes_sent;
+    const double step = p.particles / (rate * o.threads) + p.halo_bytes_sent / o.bandwidth + latency;
+    particles.push_back(p.particles);
     total += p.particles;
     most = std::max(most, p.particles);
     most_bytes = std::max(most_bytes, p.halo_bytes_sent);
@@ -62,16 +65,12 @@ nlohmann::json plan(const Scene& s, const PlanOptions& o) {
           {"bed_layer_particles", bed_particles},
           {"occupied_blocks", blocks.size()},
           {"lattice_blocks", grid.block_count()},
-          {"imbalance", imbalance([&] {
-             std::vector<uint64_t> n;
-             for (const RankPlan& p : ranks) n.push_back(p.particles);
-             return n;
-           }())},
+          {"imbalance", imbalance(particles)},
           {"largest_rank_particles", most},
           {"largest_halo_bytes_per_step", most_bytes},
           {"largest_memory_bytes", most_memory},
           {"projected_step_seconds", slowest},
-          {"assumptions", {{"bytes_per_particle", per_particle}, {"core_rate", core_rate},
+          {"assumptions", {{"bytes_per_particle", per_particle}, {"core_rate", rate},
                            {"bandwidth_bytes_per_second", o.bandwidth}, {"latency_seconds", o.latency}}},
           {"plan_seconds", seconds},
           {"per_rank", per_rank}};

@@ -125,6 +125,8 @@ void Simulation<dim>::with_whole_state(const std::function<void()>& f, bool soli
     std::swap(particles, whole);
     return;
   }
+#else
+  (void)solids_only;  // one process calls f with every particle
 #endif
   f();
 }

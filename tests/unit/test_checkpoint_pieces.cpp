@@ -91,7 +91,9 @@ void expect_keys(const Particles<2>& back, const std::vector<uint64_t>& got, con
     EXPECT_EQ(back.id[i], all.id[keys[i]]);
     EXPECT_EQ(back.x[i], all.x[keys[i]]);
     EXPECT_EQ(back.J[i], all.J[keys[i]]);
-    if (keys[i] < 3) EXPECT_EQ(back.F[i], all.F[keys[i]]);
+    if (keys[i] < 3) {
+      EXPECT_EQ(back.F[i], all.F[keys[i]]);
+    }
   }
 }
 
