@@ -105,9 +105,7 @@ class Domain {
   // The order keys of this rank's particles (their indices in the one-process array at the last sort), ascending.
   const std::vector<uint64_t>& keys() const { return keys_; }
 
-  Particles<dim> gather(const Particles<dim>& p, bool solids_only = false) const {
-    return gather_particles(p, keys_, solids_only);
-  }
+  Particles<dim> gather(const Particles<dim>& p) const { return gather_particles(p, keys_); }
 
   // p2g with the halo exchanges (parallel/halo_exchange.h). With a bed layer as one process does it
   // (Simulation::advance): the water's scatter with dt = 0, complete on the layer's stencils (bed_part.h), gives the

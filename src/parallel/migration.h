@@ -134,11 +134,9 @@ size_t migrate(Particles<dim>& p, std::vector<uint64_t>& keys, const Grid<dim>& 
 }
 
 // Every rank's particles on rank 0, in key order (the one-process array); an empty set elsewhere. Collective.
-// solids_only: the solids alone (the one-process array's first solid_count() particles, since every solid key is
-// below every fluid key).
 template <int dim>
-Particles<dim> gather_particles(const Particles<dim>& p, const std::vector<uint64_t>& keys, bool solids_only = false) {
-  const size_t n = solids_only ? p.solid_count() : p.size();
+Particles<dim> gather_particles(const Particles<dim>& p, const std::vector<uint64_t>& keys) {
+  const size_t n = p.size();
   mpi::Bytes local;
   local.reserve(n * sizeof(ParticleRecord<dim>));
   for (size_t q = 0; q < n; ++q) mpi::put(local, ParticleRecord<dim>::of(p, q, keys[q]));

@@ -10,8 +10,8 @@
 // and energies' sums over particles) are exact instead: each rank and thread accumulates an ExactSum
 // (math/exact_sum.h) and global::sum adds the accumulators' integer chunks, exact in any order.
 // Every rank must call the same reductions in the same order.
-// Not routed through it yet: iceberg detection (probe/icebergs.h), which needs every ice cell of the domain, a
-// gather rather than a reduction (evaluated on the gathered state, Simulation::with_whole_state).
+// Iceberg detection (probe/icebergs.h) joins components across ranks rather than reducing numbers: it has its own
+// exchange, parallel/rank_icebergs.h, with the same exact sums.
 #pragma once
 
 #include <type_traits>

@@ -10,6 +10,10 @@
 // The first iceberg's failure geometry (probe/failure_plane.h: the width of its top and the dip of the surface it
 // broke off along, on the side facing the glacier) is measured at that same detection and goes into summary.json
 // with it.
+// In a distributed run detection is collective and no rank gathers the ice (parallel/rank_icebergs.h): every rank
+// gets the same bodies and labels its own particles; the first iceberg's particle positions are gathered (in order-key
+// order) for the failure geometry, and the crack-start band below is reduced over the ranks (exact maxima and minima),
+// so every rank records the same first iceberg.
 // The first iceberg's crack start (probe/crack_starts.h) is the earliest event of the simulation's crack-start
 // record that lies on the band separating the new iceberg from the glacier. Where its particle is at the
 // detection, take its row: the intact particles of the glacier (body 0) and of the iceberg (body 1) within
@@ -32,13 +36,18 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <vector>
 
 #include "material/stress.h"
 #include "probe/crack_starts.h"
 #include "probe/failure_plane.h"
+#include "parallel/reduction.h"
 #include "probe/icebergs.h"
+#ifdef CDMPM_MPI
+#include "parallel/rank_icebergs.h"
+#endif
 #include "sim/simulation.h"
 
 namespace cdmpm {
@@ -59,6 +68,9 @@ class IcebergTracker {
 
   bool active() const { return active_; }
 
+  // The bodies of intact ice now (probe/icebergs.h) and, if label is non-null, the body of each of this process's
+  // particles. Collective in a distributed run (parallel/rank_icebergs.h: no rank gathers the ice); the same
+  // bodies on every rank.
   std::vector<IceBody<dim>> detect(std::vector<int>* label = nullptr) const {
     const auto& P = sim_.particles;
     const size_t n = P.size();
@@ -72,32 +84,33 @@ class IcebergTracker {
       damage[q] = particle_damage(m, P, q);
     }
     const OutputSpec& o = sim_.scene.output;
+#ifdef CDMPM_MPI
+    if (const Domain<dim>* d = sim_.domain())
+      return find_ice_bodies_on_ranks<dim>(P.x, volume, damage, is_ice, d->keys(), *d, sim_.grid, spacing_, o.flow_axis,
+                                           static_cast<Real>(o.damage_threshold), min_particles_, label);
+#endif
     return find_ice_bodies<dim>(P.x, volume, damage, is_ice, sim_.grid.dx, spacing_, o.flow_axis,
                                 static_cast<Real>(o.damage_threshold), min_particles_, label);
   }
 
-  // Detection at a probe sample: records the first iceberg and, when it is found, writes that detection's
-  // bodies to csv (labelled with the index of the frame written last). Returns true if it was found just now.
-  bool sample(std::ostream& csv, long long frame) {
-    if (!active_ || !first_.empty()) return false;
+  // Detection at a probe sample (collective): records the first iceberg; returns that detection's bodies when it is
+  // found just now (the caller writes them to icebergs.csv with the index of the frame written last), else nothing.
+  std::optional<std::vector<IceBody<dim>>> sample() {
+    if (!active_ || !first_.empty()) return std::nullopt;
     std::vector<int> label;
-    const auto bodies = detect(&label);
-    if (bodies.size() < 2) return false;
+    auto bodies = detect(&label);
+    if (bodies.size() < 2) return std::nullopt;
     const IceBody<dim>& b = bodies[1];
     first_ = {sim_.time(), b.length, b.height, b.volume, static_cast<double>(b.particles)};
     for (int a = 0; a < dim; ++a) first_.push_back(b.centroid[a]);
-    std::vector<Vec<dim>> block;
-    for (size_t q = 0; q < label.size(); ++q)
-      if (label[q] == 1) block.push_back(sim_.particles.x[q]);
     const int axis = sim_.scene.output.flow_axis;
-    const FailureGeometry f = failure_geometry<dim>(block, sim_.grid.dx, spacing_, axis,
+    const FailureGeometry f = failure_geometry<dim>(block_positions(label), sim_.grid.dx, spacing_, axis,
                                                     bodies[0].centroid[axis] < b.centroid[axis] ? -1 : 1);
     first_.push_back(f.width);
     first_.push_back(f.angle);
     bodies_sign_ = bodies[0].centroid[axis] < b.centroid[axis] ? Real(1) : Real(-1);
     append_crack_start(label);
-    write_rows(csv, frame, bodies);
-    return true;
+    return bodies;
   }
 
   static std::string csv_header() {
@@ -105,10 +118,7 @@ class IcebergTracker {
     return dim == 3 ? h + ",centroid_z" : h;
   }
 
-  void write_frame(std::ostream& csv, long long frame) const {
-    if (active_) write_rows(csv, frame, detect());
-  }
-
+  // One row per body to icebergs.csv (on rank 0 of a distributed run).
   void write_rows(std::ostream& csv, long long frame, const std::vector<IceBody<dim>>& bodies) const {
     for (const IceBody<dim>& b : bodies) {
       csv << frame << ',' << sim_.time() << ',' << b.id << ',' << b.particles << ',' << b.volume << ',' << b.length
@@ -165,18 +175,20 @@ class IcebergTracker {
     const auto& P = sim_.particles;
     const size_t ne = events.size(), n = P.size();
     if (ne == 0) return -1;
-    std::vector<Vec<dim>> at(ne);
-    std::vector<uint8_t> present(ne, 0);
+    constexpr Real inf = std::numeric_limits<Real>::infinity();
+    std::vector<Vec<dim>> at(ne, Vec<dim>::Constant(-inf));
+    std::vector<Real> present(ne, 0);
     for (size_t q = 0; q < n; ++q)  // where the event particles are now (a sink may have removed one)
       for (size_t k = 0; k < ne; ++k)
         if (P.id[q] == events[k].id) at[k] = P.x[q], present[k] = 1;
+    global::max(at);  // one rank holds each (parallel/reduction.h)
+    global::max(present);
     // Per event particle, over the particles of its row (within w of it across the flow: vertically, and
     // laterally in 3D): the glacier's front and the iceberg's rear along the flow, u = the flow coordinate
     // oriented from the glacier to the iceberg. Exact maxima / minima, any order.
     const int axis = sim_.scene.output.flow_axis;
     const Real sgn = bodies_sign_;
     const Real w = band_cells * sim_.grid.dx;
-    constexpr Real inf = std::numeric_limits<Real>::infinity();
     std::vector<Real> front(ne, -inf), rear(ne, inf);
 #pragma omp parallel
     {
@@ -197,10 +209,12 @@ class IcebergTracker {
 #pragma omp critical(cdmpm_crack_band)
       for (size_t k = 0; k < ne; ++k) front[k] = std::max(front[k], f[k]), rear[k] = std::min(rear[k], r[k]);
     }
+    global::max(front);
+    global::min(rear);
     long first = -1;
     for (size_t k = 0; k < ne; ++k) {  // events are in time order
       const Real u = sgn * at[k][axis];
-      if (present[k] && front[k] > -inf && rear[k] < inf && front[k] - w <= u && u <= rear[k] + w) {
+      if (present[k] > 0 && front[k] > -inf && rear[k] < inf && front[k] - w <= u && u <= rear[k] + w) {
         if (first < 0) first = static_cast<long>(k);
         ++counts[static_cast<int>(events[k].mode)];
       }
@@ -209,6 +223,27 @@ class IcebergTracker {
   }
 
  private:
+  // The positions of the first iceberg's particles (label 1) over every rank, in order-key order (one process:
+  // particle order), for failure_geometry.
+  std::vector<Vec<dim>> block_positions(const std::vector<int>& label) const {
+    struct Point {
+      uint64_t key;
+      Vec<dim> x;
+    };
+    std::vector<Point> points;
+    for (size_t q = 0; q < label.size(); ++q)
+      if (label[q] == 1) points.push_back({q, sim_.particles.x[q]});
+#ifdef CDMPM_MPI
+    if (const Domain<dim>* d = sim_.domain())
+      for (Point& pt : points) pt.key = d->keys()[pt.key];
+#endif
+    global::concatenate(points);
+    std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.key < b.key; });
+    std::vector<Vec<dim>> x;
+    for (const Point& pt : points) x.push_back(pt.x);
+    return x;
+  }
+
   void append_crack_start(const std::vector<int>& label) {
     std::array<long, 2> counts{};
     const long k = find_crack_start(label, counts);

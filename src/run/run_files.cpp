@@ -124,8 +124,7 @@ void RunFiles<dim>::write_probes() {
   });
 }
 
-// The frame of index meta.frame_index (if the scene writes frames), listed in particles.pvd, and the bodies of
-// intact ice at that moment.
+// The frame of index meta.frame_index (if the scene writes frames), listed in particles.pvd.
 template <int dim>
 void RunFiles<dim>::write_frame() {
   if (sim_.scene.output.frames) {
@@ -135,7 +134,21 @@ void RunFiles<dim>::write_frame() {
     meta.frames.emplace_back(sim_.time(), name);
     write_pvd(path("particles.pvd").string(), meta.frames);
   }
-  icebergs_.write_frame(bergs_, meta.frame_index);
+}
+
+template <int dim>
+void RunFiles<dim>::write_frame_icebergs() {
+  if (!icebergs_.active()) return;
+  const std::vector<IceBody<dim>> bodies = icebergs_.detect();
+  sim_.on_root([&] { icebergs_.write_rows(bergs_, meta.frame_index, bodies); });
+}
+
+template <int dim>
+bool RunFiles<dim>::sample_icebergs() {
+  const auto bodies = icebergs_.sample();
+  if (!bodies) return false;
+  sim_.on_root([&] { icebergs_.write_rows(bergs_, meta.frame_index, *bodies); });
+  return true;
 }
 
 template <int dim>

@@ -51,15 +51,15 @@ class RunFiles {
   // With pieces, on every rank of a distributed run after write_frame: this rank's piece of the frame of index
   // meta.frame_index, and on rank 0 its .pvtu.
   void write_frame_pieces();
-  // Whether write_frame reads particles (a frame written whole, or the icebergs of a scene with breakable ice), so a
-  // distributed run must gather them to rank 0 for it.
-  bool frame_reads_particles() const { return frame_reads_water() || icebergs_.active(); }
-  bool frame_reads_water() const { return !pieces_ && sim_.scene.output.frames; }  // else the icebergs' ice only
+  // Whether write_frame reads particles (a frame written whole), so a distributed run must gather them to rank 0.
+  bool frame_reads_particles() const { return !pieces_ && sim_.scene.output.frames; }
+  // The bodies of intact ice at the frame of index meta.frame_index, to icebergs.csv (collective: no gather).
+  void write_frame_icebergs();
   // Frames as one .pvtu of per-rank pieces and checkpoints as a manifest of per-rank pieces (a distributed run,
   // unless --gather-output) instead of one .vtu and one checkpoint file gathered on rank 0.
   void set_pieces(bool on) { pieces_ = on; }
-  // Detection at a probe sample (the first iceberg); true if it was found just now.
-  bool sample_icebergs() { return icebergs_.sample(bergs_, meta.frame_index); }
+  // Detection at a probe sample (the first iceberg; collective); true if it was found just now.
+  bool sample_icebergs();
   // On every rank (collective in a distributed run): checkpoint.bin, or with pieces every rank's piece and the
   // manifest; and crack_starts.csv.
   void checkpoint();

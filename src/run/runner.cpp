@@ -121,30 +121,12 @@ class TimeLoop {
     ++files_.meta.probe_index;
     files_.write_probes();
     if (!icebergs_.active()) return;
-    sim_.with_whole_state(  // iceberg detection needs every ice particle (probe/icebergs.h), and only those
-        [&] {
-          if (files_.sample_icebergs() && opt_.progress) {
-            const auto& f = icebergs_.first_;
-            std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n",
-                         progress_.tty() ? "\n" : "", f[0], f[1], f[2]);
-          }
-        },
-        true);
-    share_first_iceberg();
-  }
-
-  // The first iceberg, found on the whole state (rank 0 of a distributed run), decides when the run stops on every
-  // rank (stop_reason): every rank takes rank 0's record (identity in one process).
-  void share_first_iceberg() {
-    if (!icebergs_.active()) return;
-    std::vector<double>& f = icebergs_.first_;
-    const bool mine = !f.empty();
-    const size_t n = static_cast<size_t>(global::max(mine ? double(f.size()) : 0.0));
-    if (n == 0) return;
-    std::vector<double> all(n, -std::numeric_limits<double>::infinity());
-    if (mine) std::copy(f.begin(), f.end(), all.begin());
-    global::max(all);
-    f = all;
+    if (files_.sample_icebergs() && opt_.progress)  // collective; the same first iceberg on every rank
+      sim_.on_root([&] {
+        const auto& f = icebergs_.first_;
+        std::fprintf(stderr, "%sfirst iceberg at t = %.4g s: length %.4g m, height %.4g m\n", progress_.tty() ? "\n" : "",
+                     f[0], f[1], f[2]);
+      });
   }
 
   void frame() {
@@ -154,10 +136,12 @@ class TimeLoop {
     if (every > 0 && files_.meta.frame_index % every == 0) files_.checkpoint();
   }
 
-  // The frame of index meta.frame_index: on the gathered state where it reads particles, then every rank's piece.
+  // The frame of index meta.frame_index: on the gathered state where it reads particles, its bodies of intact ice
+  // (collective, parallel/rank_icebergs.h), then every rank's piece.
   void write_frame() {
-    if (files_.frame_reads_particles()) sim_.with_whole_state([&] { files_.write_frame(); }, !files_.frame_reads_water());
+    if (files_.frame_reads_particles()) sim_.with_whole_state([&] { files_.write_frame(); });
     else sim_.on_root([&] { files_.write_frame(); });
+    files_.write_frame_icebergs();
     files_.write_frame_pieces();
   }
 

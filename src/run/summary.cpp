@@ -77,13 +77,16 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
 #ifdef CDMPM_MPI
   // A distributed run (docs/architecture.md): its ranks, the repartitions, the particle imbalance max / mean over the
   // ranks at the particle sorts (the last, the largest, the largest after the first repartition), and rank 0's
-  // share of the traffic.
+  // share of the traffic: the halo bytes of the last step, the particles it migrated, and of iceberg detection the
+  // records it sent to other ranks' cells and the largest merge it gathered (bytes; parallel/rank_icebergs.h).
   if (const Domain<dim>* d = sim.domain())
     s["distributed"] = {{"ranks", mpi::size()}, {"repartitions", d->repartitions()},
                         {"last_imbalance", d->last_imbalance()}, {"max_imbalance", d->max_imbalance()},
                         {"max_imbalance_after_first_repartition", d->max_imbalance_repartitioned()},
                         {"rank0_halo_bytes", d->halo.halo_bytes()},
-                        {"rank0_migrated_particles", d->migrated()}};
+                        {"rank0_migrated_particles", d->migrated()},
+                        {"rank0_iceberg_records_sent", rank_iceberg_traffic.records_sent},
+                        {"rank0_iceberg_merge_bytes_max", rank_iceberg_traffic.merge_bytes_max}};
   if (sim.domain()) {
     nlohmann::json& d = s["distributed"];
     for (const auto& [n, bytes] : per_rank) d["particles_per_rank"].push_back(n), d["peak_memory_bytes_per_rank"].push_back(bytes);

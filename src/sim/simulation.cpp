@@ -109,10 +109,10 @@ void Simulation<dim>::seed_distributed() {
 #endif
 
 template <int dim>
-void Simulation<dim>::with_whole_state(const std::function<void()>& f, bool solids_only) {
+void Simulation<dim>::with_whole_state(const std::function<void()>& f) {
 #ifdef CDMPM_MPI
   if (domain_) {
-    Particles<dim> whole = domain_->gather(particles, solids_only);
+    Particles<dim> whole = domain_->gather(particles);
     if (mpi::rank() != 0) return;
     std::swap(particles, whole);
     const mpi::LocalScope local;
@@ -125,8 +125,6 @@ void Simulation<dim>::with_whole_state(const std::function<void()>& f, bool soli
     std::swap(particles, whole);
     return;
   }
-#else
-  (void)solids_only;  // one process calls f with every particle
 #endif
   f();
 }

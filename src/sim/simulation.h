@@ -64,10 +64,8 @@ class Simulation {
   // Calls f with the whole state in the one-process particle order: directly in one process; in a distributed run
   // (MPI build under mpirun, docs/architecture.md) on rank 0 only, after gathering every rank's particles there in
   // that order, with the reductions local (parallel/reduction.h). The outputs are written inside it, so they are
-  // those of one process. Collective in a distributed run. solids_only: a distributed run gathers only the solids
-  // (for outputs that read only them, like iceberg detection: the one-process array's leading solids); one process
-  // calls f with every particle.
-  void with_whole_state(const std::function<void()>& f, bool solids_only = false);
+  // those of one process. Collective in a distributed run.
+  void with_whole_state(const std::function<void()>& f);
   // Calls f on rank 0 alone (directly in one process), with the reductions local and no gather: for outputs that
   // read no particle (file bookkeeping). Not collective.
   void on_root(const std::function<void()>& f);

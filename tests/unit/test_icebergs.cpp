@@ -7,7 +7,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <random>
 
 #include "probe/icebergs.h"
@@ -365,6 +367,114 @@ TEST(IceBodies3D, SameResultWithOneOrTwoThreads) {
     EXPECT_EQ(b1[k].hi, b2[k].hi);
   }
   expect_labels_consistent(c, b1, l1);
+}
+
+// The detection split into parts as a distributed run splits it (parallel/rank_icebergs.h): each part holds the ice
+// of the cells it is home to, in a scrambled order with the one-process index as order key, and finds its
+// components and rim; merge_ice_parts joins them. The bodies and labels must be those of one process, bit for bit.
+template <int dim, class Home>
+std::vector<IceBody<dim>> split_bodies(const Cloud<dim>& c, int parts, const Home& home, size_t min_particles,
+                                       std::vector<int>& label) {
+  using Cell = typename IcePart<dim>::Cell;
+  std::vector<std::vector<size_t>> members(static_cast<size_t>(parts));
+  for (size_t p = 0; p < c.x.size(); ++p) {
+    if (!c.ice[p]) continue;
+    Cell cell;
+    for (int a = 0; a < dim; ++a) cell[a] = ice_cell_coord(c.x[p][a], dx);
+    members[static_cast<size_t>(home(cell))].push_back(p);
+  }
+  std::vector<IcePart<dim>> split;
+  for (int r = 0; r < parts; ++r) {
+    std::vector<size_t>& m = members[static_cast<size_t>(r)];
+    std::mt19937 rng(static_cast<unsigned>(r + 5));
+    std::shuffle(m.begin(), m.end(), rng);
+    std::vector<Vec<dim>> x;
+    std::vector<Real> volume, damage;
+    std::vector<uint64_t> key;
+    for (size_t p : m) x.push_back(c.x[p]), volume.push_back(c.volume[p]), damage.push_back(c.damage[p]), key.push_back(p);
+    const std::vector<uint8_t> ice(m.size(), 1);
+    IceBodyFinder<dim> finder(x, volume, damage, ice, &key, dx, Real(0.5));
+    if (!finder.bin_cells()) {
+      split.emplace_back().component.assign(m.size(), -1);
+      continue;
+    }
+    finder.occupy();
+    finder.unite();
+    const auto elsewhere = [&](const Cell& cell) { return home(cell) != r; };
+    split.push_back(finder.part(min_particles, &elsewhere));
+  }
+  std::vector<std::vector<int>> body_of;
+  auto bodies = merge_ice_parts<dim>(split, h, 0, min_particles, body_of);
+  label.assign(c.x.size(), -1);
+  for (int r = 0; r < parts; ++r)
+    for (size_t i = 0; i < members[static_cast<size_t>(r)].size(); ++i) {
+      const int32_t k = split[static_cast<size_t>(r)].component[i];
+      label[members[static_cast<size_t>(r)][i]] = k < 0 ? -1 : body_of[static_cast<size_t>(r)][static_cast<size_t>(k)];
+    }
+  return bodies;
+}
+
+template <int dim>
+void expect_same_bodies(const std::vector<IceBody<dim>>& a, const std::vector<IceBody<dim>>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].particles, b[k].particles) << "body " << k;
+    EXPECT_EQ(a[k].volume, b[k].volume) << "body " << k;
+    EXPECT_EQ(a[k].centroid, b[k].centroid) << "body " << k;
+    EXPECT_EQ(a[k].lo, b[k].lo) << "body " << k;
+    EXPECT_EQ(a[k].hi, b[k].hi) << "body " << k;
+    EXPECT_EQ(a[k].length, b[k].length) << "body " << k;
+  }
+}
+
+// Random damage and random (non-dyadic) volumes over a box: a fraction `intact` of the cells intact (below the
+// site-percolation threshold: many bodies, most of them crossing the parts' cuts), some particles of intact cells
+// damaged, water among the ice.
+template <int dim>
+Cloud<dim> random_cloud(const IVec<dim>& c0, const IVec<dim>& c1, double intact, unsigned seed) {
+  Cloud<dim> c;
+  c.box(c0, c1);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::map<std::array<int64_t, dim>, bool> cell_intact;
+  for (size_t p = 0; p < c.x.size(); ++p) {
+    std::array<int64_t, dim> k;
+    for (int a = 0; a < dim; ++a) k[a] = ice_cell_coord(c.x[p][a], dx);
+    const auto [it, fresh] = cell_intact.try_emplace(k, false);
+    if (fresh) it->second = u(rng) < intact;
+    c.volume[p] *= Real(0.5 + u(rng));
+    c.damage[p] = Real(it->second ? (u(rng) < 0.1 ? 0.6 + 0.4 * u(rng) : 0.3 * u(rng)) : 0.4 + 0.6 * u(rng));
+  }
+  for (size_t p = 0; p < c.x.size(); p += 7) c.ice[p] = 0;
+  return c;
+}
+
+TEST(IceBodies, PartsJoinedAcrossCutsGiveTheOneProcessBodies) {
+  const Cloud<2> c = random_cloud<2>(c2(-6, 0), c2(30, 20), 0.55, 3);
+  std::vector<int> l1, l3, l4;
+  const auto one = c.bodies(3, &l1);
+  ASSERT_GT(one.size(), 5u);
+  // Three parts cut along x, and four in a checkerboard of 5-cell squares (cuts along both axes).
+  const auto b3 = split_bodies<2>(c, 3, [](const IcePart<2>::Cell& k) { return k[0] < 4 ? 0 : k[0] < 13 ? 1 : 2; }, 3, l3);
+  const auto b4 = split_bodies<2>(
+      c, 4, [](const IcePart<2>::Cell& k) { return int(((k[0] + 100) / 5) % 2 + 2 * (((k[1] + 100) / 5) % 2)); }, 3, l4);
+  expect_same_bodies<2>(one, b3);
+  expect_same_bodies<2>(one, b4);
+  EXPECT_EQ(l1, l3);
+  EXPECT_EQ(l1, l4);
+  expect_labels_consistent(c, one, l1);
+}
+
+TEST(IceBodies3D, PartsJoinedAcrossCutsGiveTheOneProcessBodies) {
+  const Cloud<3> c = random_cloud<3>(c3(-4, 0, -2), c3(12, 10, 8), 0.3, 8);
+  std::vector<int> l1, l5;
+  const auto one = c.bodies(2, &l1);
+  ASSERT_GT(one.size(), 5u);
+  const auto b5 = split_bodies<3>(
+      c, 5, [](const IcePart<3>::Cell& k) { return int(((k[0] + 64) / 3 + (k[1] + 64) / 4 + (k[2] + 64) / 2) % 5); }, 2,
+      l5);
+  expect_same_bodies<3>(one, b5);
+  EXPECT_EQ(l1, l5);
 }
 
 TEST(IceBodies3D, TwoMillionParticlesOneBody) {
