@@ -92,7 +92,8 @@ struct Ice {
   template <int dim>
   Real pressure(const Particles<dim>& p, size_t q) const {
     const Real Je = volume_ratio(p, q);
-    return elastic.pressure_of_J(Je) / Je + pore_pressure<dim>(p, q);
+    const Real skeleton = elastic.pressure_of_J(Je) / Je;
+    return hydrofracture.on ? skeleton + pore_pressure<dim>(p, q) : skeleton;  // off: bit for bit (a -0 stays -0)
   }
   template <int dim>
   Real energy_density(const Particles<dim>& p, size_t q) const { return elastic.energy_density<dim>(p.F[q]); }
