@@ -10,12 +10,23 @@
 // speed sqrt(M_p / rho), M_p = kappa + 2 mu (1 - 1/d), raised by the density ratio max(det F, 1) (the
 // volumetric tangent kappa/2 (J^2 + 1) J-scaled grows like J^2 in tension). Seeded under a lithostatic
 // vertical stress -p with sigma_h = 0 (a laterally free slab on a bed): F = diag(s_h, s_v).
+// Hydrofracture (poro-damage, optional key "hydrofracture"; Duddu, Jimenez & Bassis 2020, J. Glaciol. 66(257),
+// 415-429, "A non-local continuum poro-damage mechanics model for hydrofracturing of surface crevasses in grounded
+// glaciers"; Sun, Duddu & Hirshikesh 2021, Extreme Mech. Lett. 45, 101277, the phase-field form): water standing at level z_w in the ice's crack system fills its damage, and the
+// Cauchy stress of ice with damage d is
+//   sigma = sigma_ice(F) - d p_w I,   p_w = rho_w g max(z_w - z, 0),
+// z the particle's elevation (the last axis), so the Kirchhoff stress p2g uses is tau = tau_ice - J d p_w I (J = det F).
+// sigma_ice is the skeleton's (effective) stress: the yield surface and the softening see it alone, as Biot's
+// effective stress with coefficient d; the water acts on the ice through the momentum balance, pushing the walls of a
+// damaged band apart. It acts in every damaged particle below z_w (optionally only within `region` along x).
 // Scene keys (docs/ice.md, docs/scenes.md): density, youngs_modulus, poissons_ratio (0.3); M or
-// friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true).
+// friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true);
+// hydrofracture {water_level, water_density (1025), region} (off).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "material/cohesive_cam_clay.h"
@@ -23,6 +34,24 @@
 #include "material/neo_hookean_split.h"
 
 namespace cdmpm {
+
+// Water pressure in damaged ice (poro-damage, see the header). Off by default: the stress is then the skeleton's,
+// bit for bit.
+struct PoroDamage {
+  bool on = false;
+  Real water_level = 0;                           // z_w, elevation of the water in the crack system [m]
+  Real water_density = 1025;                      // rho_w [kg/m^3]
+  Real gravity = 0;                               // g [m/s^2], set by the scene loader from the scene's gravity
+  Real x_min = -std::numeric_limits<Real>::max();  // the region along the first axis where it acts [m]
+  Real x_max = std::numeric_limits<Real>::max();
+  // p_w = rho_w g max(z_w - z, 0) at position x (zero outside the region).
+  template <int dim>
+  Real water_pressure(const Vec<dim>& x) const {
+    const Real head = water_level - x(dim - 1);
+    if (!(head > 0) || x(0) < x_min || x(0) > x_max) return 0;
+    return water_density * gravity * head;
+  }
+};
 
 struct Ice {
   static constexpr std::string_view type = "ice";
@@ -33,6 +62,7 @@ struct Ice {
   bool plasticity = true;   // false: purely elastic (no return mapping)
   Real p0_initial = 0;      // pre-consolidation pressure of intact ice [Pa]
   Real alpha_initial = 0;   // alpha giving p0_initial
+  PoroDamage hydrofracture;  // water pressure in damaged ice (off unless the scene sets "hydrofracture")
 
   static Ice parse(const SceneReader& r, const Node& n);
 
@@ -40,14 +70,30 @@ struct Ice {
   Real damage(Real alpha) const { return plasticity ? CohesiveCamClay::damage(p0(alpha), p0_initial) : Real(0); }
 
   Real density() const { return rho0; }
+  // d p_w of particle q: the pressure of the water in its damage (0 with hydrofracture off).
   template <int dim>
-  Mat<dim> kirchhoff(const Particles<dim>& p, size_t q) const { return elastic.kirchhoff<dim>(p.F[q]); }
+  Real pore_pressure(const Particles<dim>& p, size_t q) const {
+    if (!hydrofracture.on) return 0;
+    const Real pw = hydrofracture.water_pressure<dim>(p.x[q]);
+    return pw > 0 ? damage(p.alpha[q]) * pw : Real(0);
+  }
+  // tau = tau_ice(F) - J d p_w I (poro-damage; the header).
+  template <int dim>
+  Mat<dim> kirchhoff(const Particles<dim>& p, size_t q) const {
+    Mat<dim> tau = elastic.kirchhoff<dim>(p.F[q]);
+    if (hydrofracture.on) {
+      const Real pp = pore_pressure<dim>(p, q);
+      if (pp > 0) tau.diagonal().array() -= p.F[q].determinant() * pp;
+    }
+    return tau;
+  }
   template <int dim>
   Real volume_ratio(const Particles<dim>& p, size_t q) const { return p.F[q].determinant(); }
   template <int dim>
   Real pressure(const Particles<dim>& p, size_t q) const {
     const Real Je = volume_ratio(p, q);
-    return elastic.pressure_of_J(Je) / Je;
+    const Real skeleton = elastic.pressure_of_J(Je) / Je;
+    return hydrofracture.on ? skeleton + pore_pressure<dim>(p, q) : skeleton;  // off: bit for bit (a -0 stays -0)
   }
   template <int dim>
   Real energy_density(const Particles<dim>& p, size_t q) const { return elastic.energy_density<dim>(p.F[q]); }
@@ -81,7 +127,7 @@ struct Ice {
 // Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
 inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
-               "alpha0", "tensile_strength", "hardening", "plastic"});
+               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture"});
   Ice ice;
   // Bounds of real materials, which keep the time step and the state representable.
   ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), {1, 1e5}, " kg/m^3"));
@@ -91,7 +137,7 @@ inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   ice.plastic.hardening = r.boolean(m, "hardening", true);
   ice.elastic = NeoHookeanSplit::from_young_poisson(static_cast<Real>(E), static_cast<Real>(nu), r.dim());
   if (!ice.plasticity) {
-    for (const char* key : {"M", "friction_angle", "beta", "xi", "p0", "alpha0", "tensile_strength"})
+    for (const char* key : {"M", "friction_angle", "beta", "xi", "p0", "alpha0", "tensile_strength", "hydrofracture"})
       if (m.has(key)) r.fail(m.child(key), "not used when \"plastic\" is false (remove it)");
     ice.plastic.M = ice.plastic.beta = ice.plastic.xi = 0;
     return ice;
@@ -123,6 +169,21 @@ inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   // Damage is measured against the strength the particle actually starts with.
   ice.alpha_initial = ice.plastic.alpha_of_p0(static_cast<Real>(p0), ice.elastic.kappa);
   ice.p0_initial = ice.p0(ice.alpha_initial);
+  if (m.has("hydrofracture")) {
+    // {"water_level": z_w [m], "water_density": rho_w [kg/m^3] (1025), "region": [x_min, x_max] [m] (everywhere)}.
+    const Node h = m["hydrofracture"];
+    r.object(h, {"water_level", "water_density", "region"});
+    ice.hydrofracture.on = true;
+    ice.hydrofracture.water_level = static_cast<Real>(r.number(r.required(h, "water_level"), {-1e7, 1e7}, " m"));
+    // Fresh water 1000, sea water 1025, dense brines about 1200 kg/m^3.
+    ice.hydrofracture.water_density = static_cast<Real>(r.number(h, "water_density", {900, 1300}, 1025.0));
+    if (h.has("region")) {
+      const std::vector<double> x = r.numbers(h["region"], 2, {-1e7, 1e7});
+      if (!(x[0] < x[1])) r.expected(h["region"], "[x_min, x_max] with x_min < x_max");
+      ice.hydrofracture.x_min = static_cast<Real>(x[0]);
+      ice.hydrofracture.x_max = static_cast<Real>(x[1]);
+    }
+  }
   return ice;
 }
 

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <variant>
 
 namespace cdmpm {
 namespace {
@@ -116,6 +117,14 @@ class Loader {
       if (!is_identifier(item.key()))
         r_.fail(m.path, "expected a material name of letters, digits and '_', got \"" + item.key() + "\"");
       s_.materials.push_back(parse_material(r_, m, item.key()));
+      // Hydrofracture's water pressure rho_w g (z_w - z) needs the scene's gravity, down the last (vertical) axis.
+      if (auto* ice = std::get_if<Ice>(&s_.materials.back().model); ice && ice->hydrofracture.on) {
+        const double g = -s_.gravity.back();
+        for (int a = 0; a + 1 < dim_; ++a)
+          if (s_.gravity[a] != 0) r_.fail(m.child("hydrofracture"), "needs gravity along the last (vertical) axis only");
+        if (!(g > 0)) r_.fail(m.child("hydrofracture"), "needs gravity pointing down the last axis (gravity's last entry < 0)");
+        ice->hydrofracture.gravity = static_cast<Real>(g);
+      }
     }
   }
 
