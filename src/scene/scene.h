@@ -56,6 +56,8 @@ struct BodySpec {
                                    // clockwise in 2D; in the x-z plane in 3D), about the hinge if any, else the centre
   std::vector<double> hinge;       // fixed pivot point (dim entries); empty = free body
   double hold_until = 0;           // the body is held at rest until this time [s], then released
+  std::vector<std::array<double, 2>> motion;  // hinged only: a prescribed tilt, (time [s], degrees) pairs, piecewise
+                                              // linear, held at the last angle after the last time; empty = free
   // Fluid bodies only: start a solitary wave (sim/solitary_wave.h; key "solitary_wave" of the body).
   std::optional<SolitaryWave> solitary;
   // Ice bodies only: surface crevasses cut from the top, from seeded simplex noise (shape/crevasse_field.h;

@@ -209,15 +209,29 @@ class Loader {
     }
   }
 
-  // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds}, all optional.
+  // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds, "motion": [[t, degrees], ...]}, all
+  // optional; a motion needs a hinge and takes the place of tilt and hold_until (its first angle is the tilt).
   void rigid_options(const Node& r, BodySpec& spec) const {
-    r_.object(r, {"tilt", "hinge", "hold_until"});
+    r_.object(r, {"tilt", "hinge", "hold_until", "motion"});
     spec.tilt = r_.number(r, "tilt", {-180, 180, true, true}, 0.0);
     if (r.has("hinge")) {
       spec.hinge = r_.numbers(r["hinge"], dim_);
       r_.inside(r["hinge"], spec.hinge, spec.hinge, "a hinge point");
     }
     spec.hold_until = r_.number(r, "hold_until", ge(0), 0.0);
+    if (!r.has("motion")) return;
+    const Node m = r["motion"];
+    if (spec.hinge.empty()) r_.expected(m, "no motion on a body without a hinge (the motion is a tilt about it)");
+    if (r.has("tilt") || r.has("hold_until"))
+      r_.expected(m, "a motion without \"tilt\" and \"hold_until\" (its first angle is the tilt)");
+    spec.motion = r_.pairs(m, 2);
+    for (size_t i = 0; i < spec.motion.size(); ++i) {
+      const auto& [t, degrees] = spec.motion[i];
+      if (i == 0 && t != 0) r_.expected(m[0], "a first time of 0 s");
+      if (i > 0 && !(t > spec.motion[i - 1][0])) r_.expected(m[i], "times increasing from one pair to the next");
+      if (!(degrees > -180 && degrees < 180)) r_.expected(m[i], "an angle in (-180, 180) degrees");
+    }
+    spec.tilt = spec.motion[0][1];
   }
 
   // Checked by building it once (each boundary type reads its own keys); the faces it closes or needs closed

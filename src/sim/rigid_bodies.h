@@ -15,6 +15,10 @@
 // A hinged body turns about its fixed pivot o only: v_p = omega x (x_p - o), omega = I_o^-1 L_o with L and I
 // taken about o (the pivot's reaction changes the linear momentum, not the angular momentum about o).
 // A held body (time < hold_until) is at rest: v_p = 0, C_p = 0.
+// A driven body (a hinged body with a `motion`, a prescribed tilt a(t)) turns about its pivot at the rate that takes
+// it from a(t) to a(t + dt) over the step, whatever the forces: omega = (a(t + dt) - a(t)) / dt about the axis
+// normal to the x-z plane (2D: counter-clockwise; 3D: -y, since the tilt turns +x towards +z). It is a wave maker
+// of given motion, the same in 2D and 3D (scenes/eqip_sermia_3d.json).
 // Before its C_p is replaced, each particle's volume ratio follows the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
 // so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
 // pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
@@ -63,6 +67,17 @@ struct RigidBody {
   Eigen::Matrix<Real, rot, rot> inertia = Eigen::Matrix<Real, rot, rot>::Identity();  // about the centre or pivot
                                                                                       // (set by each projection)
   double angle = 0;  // 2D: counter-clockwise angle from the untilted shape [rad], not wrapped; 3D: angle of `rotation`
+  std::vector<std::array<double, 2>> motion;  // driven: prescribed tilt (time [s], degrees), piecewise linear
+
+  // The prescribed tilt [rad] at time t: linear between the motion's pairs, held after the last.
+  double prescribed_tilt(double t) const {
+    size_t i = 1;
+    while (i < motion.size() && motion[i][0] < t) ++i;
+    if (i == motion.size()) return motion.back()[1] * std::numbers::pi / 180;
+    const auto &a = motion[i - 1], &b = motion[i];
+    const double f = std::clamp((t - a[0]) / (b[0] - a[0]), 0.0, 1.0);
+    return (a[1] + f * (b[1] - a[1])) * std::numbers::pi / 180;
+  }
 };
 
 // Small helpers shared by the projection and the seeding: 2D angular quantities are 1-vectors.
@@ -131,6 +146,7 @@ class RigidBodies {
       RigidBody<dim> body;
       body.material = b.material_index;
       body.hold_until = b.hold_until;
+      body.motion = b.motion;
       body.hinged = !b.hinge.empty();
       for (int a = 0; a < dim && body.hinged; ++a) body.pivot[a] = static_cast<Real>(b.hinge[a]);
       body.rotation = A::tilt(b.tilt);
@@ -191,6 +207,15 @@ class RigidBodies {
         B.omega.setZero();
         continue;
       }
+      if (!B.motion.empty()) {
+        const double rate = dt > 0 ? (B.prescribed_tilt(time + dt) - B.prescribed_tilt(time)) / dt
+                                   : (B.prescribed_tilt(time + 1e-6) - B.prescribed_tilt(time)) / 1e-6;
+        B.omega.setZero();
+        if constexpr (dim == 2) B.omega[0] = static_cast<Real>(rate);
+        else B.omega[1] = static_cast<Real>(-rate);
+        B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
+        continue;
+      }
       const DSpin omega = I[b].ldlt().solve(L[b]);
       B.omega = omega.template cast<Real>();
       if (B.hinged) {
@@ -229,9 +254,11 @@ class RigidBodies {
         B.angle += static_cast<double>(B.omega[0] * dt);
       } else {
         B.angle = Eigen::AngleAxis<Real>(B.rotation).angle();
-        const typename A::Spin L = B.inertia * B.omega;
-        B.inertia = R[b] * B.inertia * R[b].transpose();
-        B.omega = B.inertia.ldlt().solve(L);
+        if (B.motion.empty()) {  // driven: omega is the motion's (set again by the next projection)
+          const typename A::Spin L = B.inertia * B.omega;
+          B.inertia = R[b] * B.inertia * R[b].transpose();
+          B.omega = B.inertia.ldlt().solve(L);
+        }
       }
       if (B.hinged) B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
     }

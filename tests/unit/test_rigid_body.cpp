@@ -166,6 +166,60 @@ TEST(RigidBody, HingedBarTurnsAboutItsPivot) {
   EXPECT_NEAR(B.angle, -0.5 * alpha * t * t * (1 + dt / t), 0.01 * 0.5 * alpha * t * t);
 }
 
+// A driven body (rigid key "motion": a prescribed tilt about its hinge) follows its motion whatever the forces:
+// under gravity, a bar hinged at its left end turns from 0 to -30 degrees over 0.5 s and then holds, its angle
+// a(t) at every step equal to the piecewise-linear motion (exact: each step turns by a(t + dt) - a(t)), its centre
+// at a fixed distance from the pivot, in 2D and in 3D (tilt in the x-z plane: about -y). Without the motion the
+// bar would fall the other way first (-30 degrees is clockwise, gravity turns it clockwise too, but at
+// alpha t^2 / 2 = 0.22 rad by 0.5 s, not 0.52).
+template <int dim>
+void expect_driven_motion() {
+  std::vector<double> lo(dim, 1.9), hi(dim, 2.1);
+  lo[0] = 1.0, hi[0] = 2.0, lo.back() = 2.0, hi.back() = 2.2;
+  json j = block_scene(dim, lo, hi, g);
+  std::vector<double> pivot(dim, 2.0);
+  pivot[0] = 1.0, pivot.back() = 2.1;
+  j["bodies"][0]["rigid"] = {{"hinge", pivot}, {"motion", {{0, 0}, {0.5, -30}, {1.0, -30}}}};
+  const Scene scene = scene_from_json(j, "driven.json");
+  Simulation<dim> sim(scene);
+  const auto& B = sim.rigid.bodies[0];
+  const double r0 = (B.centre - B.pivot).norm();
+  const double deg = std::numbers::pi / 180;
+  for (double t : {0.1, 0.25, 0.5, 0.8}) {
+    run_until(sim, t);
+    const double expected = -30 * deg * std::min(1.0, t / 0.5);
+    const double tol = roundoff(1e-9, sim.steps());
+    if constexpr (dim == 2) EXPECT_NEAR(B.angle, expected, tol) << "t = " << t;
+    else EXPECT_NEAR(B.angle, std::abs(expected), tol) << "t = " << t;  // 3D: the rotation's angle, >= 0
+    // The x axis turned by the tilt: towards -z for a negative (clockwise) tilt.
+    EXPECT_NEAR(B.rotation(dim - 1, 0), std::sin(expected), tol) << "t = " << t;
+    EXPECT_NEAR((B.centre - B.pivot).norm(), r0, position_roundoff(1e-12, 2.0) * std::max(1LL, sim.steps()));
+  }
+  EXPECT_EQ(B.omega.norm(), 0) << "held at the last angle";
+}
+TEST(RigidBody, DrivenBodyFollowsItsMotion2D) { expect_driven_motion<2>(); }
+TEST(RigidBody, DrivenBodyFollowsItsMotion3D) { expect_driven_motion<3>(); }
+
+TEST(RigidBody, MotionInputErrors) {
+  auto refused = [](json rigid, const std::string& expected) {
+    json j = block_scene(2, {1.0, 2.0}, {2.0, 2.2}, g);
+    j["bodies"][0]["rigid"] = std::move(rigid);
+    try {
+      scene_from_json(j, "bad.json");
+      ADD_FAILURE() << "accepted; expected: " << expected;
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  };
+  const json hinge = {1.0, 2.1};
+  refused({{"motion", {{0, 0}, {1, 10}}}}, "bodies[0].rigid.motion: expected no motion on a body without a hinge");
+  refused({{"hinge", hinge}, {"tilt", 5}, {"motion", {{0, 0}, {1, 10}}}}, "without \"tilt\"");
+  refused({{"hinge", hinge}, {"motion", {{0.5, 0}, {1, 10}}}}, "bodies[0].rigid.motion[0]: expected a first time of 0 s");
+  refused({{"hinge", hinge}, {"motion", {{0, 0}, {1, 10}, {1, 20}}}}, "motion[2]: expected times increasing");
+  refused({{"hinge", hinge}, {"motion", {{0, 0}, {1, 190}}}}, "motion[1]: expected an angle in (-180, 180)");
+  refused({{"hinge", hinge}, {"motion", {{0, 0}}}}, "bodies[0].rigid.motion");
+}
+
 // A held block stays at rest until hold_until, then falls with g from rest.
 TEST(RigidBody, HeldBlockIsReleasedAtHoldTime) {
   json j = block_scene(2, {1.6, 3.0}, {2.4, 3.5}, g);
