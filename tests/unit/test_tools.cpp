@@ -37,9 +37,10 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
                         "validate_dam_break", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_eqip"), "--skip-run", "--out", none}),
                         "validate_eqip", none);
-  expect_one_line_error(run_program(kPython, {source_path("tools/eqip_2d_to_3d"), "--skip-run", "--out", none}),
-                        "eqip_2d_to_3d", none);
-  EXPECT_FALSE(std::filesystem::exists(none)) << "eqip_2d_to_3d wrote into " << none;
+  const std::string no_pair = dir / "no_such_pair";
+  expect_one_line_error(run_program(kPython, {source_path("tools/eqip_2d_to_3d"), "--skip-run", "--out", no_pair}),
+                        "eqip_2d_to_3d", no_pair);
+  EXPECT_FALSE(std::filesystem::exists(no_pair)) << "eqip_2d_to_3d wrote into " << no_pair;
   expect_one_line_error(run_program(kPython, {source_path("tools/validate_runup"), "--skip-run", "--out", none}),
                         "validate_runup", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/runup_linear.py"), "0.1-2.5"}), "runup_linear", "0.1-2.5");
