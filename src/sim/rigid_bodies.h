@@ -71,12 +71,24 @@ struct RigidBody {
 
   // The prescribed tilt [rad] at time t: linear between the motion's pairs, held after the last.
   double prescribed_tilt(double t) const {
-    size_t i = 1;
-    while (i < motion.size() && motion[i][0] < t) ++i;
+    const size_t i = motion_segment(t);
     if (i == motion.size()) return motion.back()[1] * std::numbers::pi / 180;
     const auto &a = motion[i - 1], &b = motion[i];
     const double f = std::clamp((t - a[0]) / (b[0] - a[0]), 0.0, 1.0);
     return (a[1] + f * (b[1] - a[1])) * std::numbers::pi / 180;
+  }
+  // The prescribed tilt rate [rad/s] at time t: the slope of the pair interval holding t, 0 after the last pair.
+  double prescribed_rate(double t) const {
+    const size_t i = motion_segment(t);
+    if (i == motion.size()) return 0;
+    const auto &a = motion[i - 1], &b = motion[i];
+    return (b[1] - a[1]) / (b[0] - a[0]) * std::numbers::pi / 180;
+  }
+  // Index of the first pair later than or at t (motion.size() past the last), at least 1.
+  size_t motion_segment(double t) const {
+    size_t i = 1;
+    while (i < motion.size() && motion[i][0] < t) ++i;
+    return i;
   }
 };
 
@@ -209,7 +221,7 @@ class RigidBodies {
       }
       if (!B.motion.empty()) {
         const double rate = dt > 0 ? (B.prescribed_tilt(time + dt) - B.prescribed_tilt(time)) / dt
-                                   : (B.prescribed_tilt(time + 1e-6) - B.prescribed_tilt(time)) / 1e-6;
+                                   : B.prescribed_rate(time);  // the initial state (no step to cover)
         B.omega.setZero();
         if constexpr (dim == 2) B.omega[0] = static_cast<Real>(rate);
         else B.omega[1] = static_cast<Real>(-rate);

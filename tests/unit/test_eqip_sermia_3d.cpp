@@ -15,6 +15,8 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "cli_helpers.h"
 
@@ -29,11 +31,15 @@ std::map<std::string, double> first_crests(const std::string& waves_csv) {
   return out;
 }
 
+// Runs one member of the pair over the shortened fjord with the given gauges (and extra --set values); its first crests.
 std::map<std::string, double> run_pair_member(const TempDir& dir, const std::string& scene, const std::string& name,
-                                              const std::string& probes) {
-  const auto r = run_cdmpm({"run", source_path(scene), "--out", dir / name, "--quiet", "--set", "parameters.dx=20",
-                            "--set", "time.end=32", "--set", "parameters.fjord_end=1400", "--set", "output.frames=false",
-                            "--set", "probes.list=" + probes});
+                                              const std::string& probes, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"run", source_path(scene), "--out", dir / name, "--quiet",
+                                   "--set", "parameters.dx=20", "--set", "time.end=32",
+                                   "--set", "parameters.fjord_end=1400", "--set", "output.frames=false",
+                                   "--set", "probes.list=" + probes};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto r = run_cdmpm(args);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return first_crests(dir / (name + "/waves.csv"));
 }
@@ -47,12 +53,9 @@ TEST(EqipSermia3D, FiniteSectionWaveSpreadsBeyondThe2DWave) {
       R"([{"name": "gauge_250m", "type": "wave_gauge", "material": "water", "position": [410, 10], "still_level": 160},)"
       R"( {"name": "gauge_500m", "type": "wave_gauge", "material": "water", "position": [660, 10], "still_level": 160}])";
   const auto a2 = run_pair_member(dir, "scenes/eqip_sermia_block_2d.json", "2d", g2);
-  const auto r = run_cdmpm({"run", source_path("scenes/eqip_sermia_3d.json"), "--out", dir / "3d", "--quiet", "--set",
-                            "parameters.dx=20", "--set", "time.end=32", "--set", "parameters.fjord_end=1400", "--set",
-                            "parameters.fjord_width=600", "--set", "parameters.absorbing_width=200", "--set",
-                            "output.frames=false", "--set", "probes.list=" + g3});
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto a3 = first_crests(dir / "3d/waves.csv");
+  const auto a3 = run_pair_member(dir, "scenes/eqip_sermia_3d.json", "3d", g3,
+                                  {"--set", "parameters.fjord_width=600", "--set", "parameters.absorbing_width=200"});
+  ASSERT_FALSE(a2.empty() || a3.empty());
   const double r250 = a3.at("gauge_250m") / a2.at("gauge_250m"), r500 = a3.at("gauge_500m") / a2.at("gauge_500m");
   std::printf("first crest 2D: %.3f m (250 m), %.3f m (500 m); 3D: %.3f m, %.3f m; 3D/2D %.4f, %.4f\n",
               a2.at("gauge_250m"), a2.at("gauge_500m"), a3.at("gauge_250m"), a3.at("gauge_500m"), r250, r500);
