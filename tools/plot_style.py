@@ -13,7 +13,9 @@
   probe_units(run_dir)          axis label with units for every column of probes.csv, from the probe types in
                                 the run's scene.resolved.json (2D runs: extensive quantities per metre of width);
   read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, ...) as column name -> array
-                                (an empty field is NaN).
+                                (an empty field is NaN);
+  run_cdmpm(tool, scene, out)   runs build/cdmpm on a scene with --set values, printing the command; a failed run
+                                ends the tool with one line (the program's own messages are above it).
 """
 import json
 import os
@@ -23,6 +25,7 @@ import sys
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CDMPM = os.path.join(REPO, "build", "cdmpm")
 WATER = "#3a7bd5"
 
 
@@ -137,3 +140,15 @@ def read_csv(path):
     for k, name in enumerate(header):
         cols[name] = np.array([float(r[k]) if k < len(r) and r[k] != "" else np.nan for r in rows])
     return cols
+
+
+def run_cdmpm(tool, scene, out, threads=None, sets=(), force=True):
+    """build/cdmpm run SCENE --out OUT --quiet [--force] [--threads N] [--set S ...]; exits via fail() if it fails."""
+    cmd = [CDMPM, "run", scene, "--out", out, "--quiet"] + (["--force"] if force else [])
+    if threads:
+        cmd += ["--threads", str(threads)]
+    for s in sets:
+        cmd += ["--set", s]
+    print("running:", " ".join(cmd), flush=True)
+    if subprocess.run(cmd).returncode != 0:
+        fail(tool, f"the run of {os.path.basename(scene)} failed (its messages are above; outputs in {out})")
