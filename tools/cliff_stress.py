@@ -18,8 +18,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail  # noqa: E402
-from vtu import read_vtu  # noqa: E402
+from plot_style import read_material_frame  # noqa: E402
 
 
 def principal_tension(stress):
@@ -37,21 +36,13 @@ def main():
     ap.add_argument("--bands", type=float, nargs="+", default=[0, 40, 80, 120, 160, 200, 300, 500, 900],
                     help="band edges, metres behind the front (ascending)")
     args = ap.parse_args()
-    path = os.path.join(args.out, f"particles_{args.frame:04d}.vtu")
-    if not os.path.exists(path):
-        fail("cliff_stress", f"{path}: no such frame")
-    pts, f = read_vtu(path)
-    if "stress" not in f or "damage" not in f:
-        fail("cliff_stress", f"{path}: the frame has no stress or damage field (a 2D run with ice writes both)")
-    ice = f["material"] == args.material
-    if not ice.any():
-        fail("cliff_stress", f"{path}: no particle of material {args.material}")
-    x, y = pts[ice, 0], pts[ice, 1]
-    s1 = principal_tension(f["stress"][ice]) / 1e3
-    broken = np.nan_to_num(f["damage"][ice]) > args.damage
+    path, pts, f = read_material_frame("cliff_stress", args.out, args.frame, args.material, ("stress", "damage"))
+    x, y = pts[:, 0], pts[:, 1]
+    s1 = principal_tension(f["stress"]) / 1e3
+    broken = np.nan_to_num(f["damage"]) > args.damage
     front, top = x.max(), y.max()
     behind = front - x
-    print(f"{path}: {ice.sum()} ice particles, front at x = {front:.1f} m, surface at y = {top:.1f} m")
+    print(f"{path}: {len(x)} ice particles, front at x = {front:.1f} m, surface at y = {top:.1f} m")
     for lo, hi in zip(args.bands[:-1], args.bands[1:]):
         k = (behind >= lo) & (behind < hi)
         if not k.any():

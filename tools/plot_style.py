@@ -14,6 +14,9 @@
                                 the run's scene.resolved.json (2D runs: extensive quantities per metre of width);
   read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, ...) as column name -> array
                                 (an empty field is NaN);
+  read_material_frame(tool, out, frame, material, needs)
+                                frame FRAME of run OUT (particles_FRAME.vtu): its path, and the positions and fields
+                                of one material's particles; one-line errors for a missing frame, field or material;
   run_cdmpm(tool, scene, out)   runs build/cdmpm on a scene with --set values, printing the command; a failed run
                                 ends the tool with one line (the program's own messages are above it).
 """
@@ -152,3 +155,20 @@ def run_cdmpm(tool, scene, out, threads=None, sets=(), force=True):
     print("running:", " ".join(cmd), flush=True)
     if subprocess.run(cmd).returncode != 0:
         fail(tool, f"the run of {os.path.basename(scene)} failed (its messages are above; outputs in {out})")
+
+
+def read_material_frame(tool, out, frame, material, needs=("stress",)):
+    """(path, positions, fields) of the particles of material index MATERIAL in frame FRAME of the run in OUT."""
+    from vtu import read_vtu
+
+    path = os.path.join(out, f"particles_{frame:04d}.vtu")
+    if not os.path.exists(path):
+        fail(tool, f"{path}: no such frame")
+    pts, f = read_vtu(path)
+    missing = [k for k in ("material",) + tuple(needs) if k not in f]
+    if missing:
+        fail(tool, f"{path}: the frame has no {' or '.join(missing)} field (a 2D run with ice writes them)")
+    sel = f["material"] == material
+    if not sel.any():
+        fail(tool, f"{path}: no particle of material {material}")
+    return path, pts[sel], {k: v[sel] for k, v in f.items()}

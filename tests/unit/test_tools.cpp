@@ -45,6 +45,7 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
                         "validate_runup", none);
   expect_one_line_error(run_program(kPython, {source_path("tools/runup_linear.py"), "0.1-2.5"}), "runup_linear", "0.1-2.5");
   expect_one_line_error(run_program(kPython, {source_path("tools/cliff_stress.py"), none, "0"}), "cliff_stress", none);
+  expect_one_line_error(run_program(kPython, {source_path("tools/resolved_shear.py"), none, "0"}), "resolved_shear", none);
 }
 
 // tools/runup_linear.py against the theory it evaluates (Synolakis 1987): its asymptotic column is the run-up law
