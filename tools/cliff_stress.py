@@ -18,7 +18,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import read_material_frame  # noqa: E402
+from plot_style import add_frame_arguments, read_material_frame  # noqa: E402
 
 
 def principal_tension(stress):
@@ -29,9 +29,7 @@ def principal_tension(stress):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out")
-    ap.add_argument("frame", type=int)
-    ap.add_argument("--material", type=int, default=0, help="material index of the ice (default 0)")
+    add_frame_arguments(ap)
     ap.add_argument("--damage", type=float, default=0.5, help="broken above this damage (default 0.5)")
     ap.add_argument("--bands", type=float, nargs="+", default=[0, 40, 80, 120, 160, 200, 300, 500, 900],
                     help="band edges, metres behind the front (ascending)")

@@ -14,6 +14,7 @@
                                 the run's scene.resolved.json (2D runs: extensive quantities per metre of width);
   read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, ...) as column name -> array
                                 (an empty field is NaN);
+  add_frame_arguments(ap)       the arguments OUT FRAME [--material M] that read_material_frame takes;
   read_material_frame(tool, out, frame, material, needs)
                                 frame FRAME of run OUT (particles_FRAME.vtu): its path, and the positions and fields
                                 of one material's particles; one-line errors for a missing frame, field or material;
@@ -155,6 +156,13 @@ def run_cdmpm(tool, scene, out, threads=None, sets=(), force=True):
     print("running:", " ".join(cmd), flush=True)
     if subprocess.run(cmd).returncode != 0:
         fail(tool, f"the run of {os.path.basename(scene)} failed (its messages are above; outputs in {out})")
+
+
+def add_frame_arguments(ap):
+    """Positional OUT (a run's folder) and FRAME (its frame number), and --material (default 0, the ice)."""
+    ap.add_argument("out")
+    ap.add_argument("frame", type=int)
+    ap.add_argument("--material", type=int, default=0, help="material index of the ice (default 0)")
 
 
 def read_material_frame(tool, out, frame, material, needs=("stress",)):

@@ -15,17 +15,14 @@ tools/shear_regime.py) at least the ranges' lower bounds and at most their upper
 M in [1e-3, 30] and beta in [1e-9, 10] (the infimum is approached as beta -> 0). docs/eqip_sermia.md#what-the-observed-width-and-dip-imply uses it.
 """
 import argparse
-import json
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail, read_material_frame  # noqa: E402
-from shear_regime import shear, uniaxial  # noqa: E402
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from plot_style import add_frame_arguments, fail, read_material_frame  # noqa: E402
+from shear_regime import RANGES, laboratory_ranges, shear, uniaxial  # noqa: E402
 
 
 def smallest_shear_strength(st_lo, st_hi, sc_lo, sc_hi):
@@ -41,13 +38,11 @@ def smallest_shear_strength(st_lo, st_hi, sc_lo, sc_hi):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out")
-    ap.add_argument("frame", type=int)
-    ap.add_argument("--material", type=int, default=0, help="material index of the ice (default 0)")
+    add_frame_arguments(ap)
     ap.add_argument("--above", type=float, default=150.0, help="only ice above this elevation [m] (sea level)")
     ap.add_argument("--within", type=float, default=100.0, help="only ice within this distance of the front [m]")
     ap.add_argument("--dips", type=float, nargs="+", default=[45.0, 52.5, 60.0], help="plane dips [degrees]")
-    ap.add_argument("--ranges", default=os.path.join(ROOT, "..", "shared", "data", "ice_and_water.json"))
+    ap.add_argument("--ranges", default=RANGES)
     a = ap.parse_args()
     path, pts, d = read_material_frame("resolved_shear", a.out, a.frame, a.material)
     x, y, s = pts[:, 0], pts[:, 1], d["stress"]
@@ -70,11 +65,7 @@ def main():
         j = np.argmax(np.where(sel, along, -1))
         print(f"  planes dipping {dip:g} deg: largest resolved shear {along[j] / 1e6:.3f} MPa (normal stress "
               f"{normal[j] / 1e6:.3f} MPa, tension positive), {front - x[j]:.0f} m behind the front")
-    if os.path.exists(a.ranges):
-        r = json.load(open(a.ranges))
-        (st_lo, st_hi), (sc_lo, sc_hi) = r["ice_tensile_strength_Pa"], r["ice_compressive_strength_Pa"]
-    else:
-        st_lo, st_hi, sc_lo, sc_hi = 0.7e6, 3.1e6, 5e6, 25e6
+    _, (st_lo, st_hi), (sc_lo, sc_hi) = laboratory_ranges(a.ranges)
     tau_s, M, beta = smallest_shear_strength(st_lo, st_hi, sc_lo, sc_hi)
     print(f"smallest pure-shear strength in the laboratory ranges (sigma_t {st_lo / 1e6:g}-{st_hi / 1e6:g} MPa, "
           f"sigma_c {sc_lo / 1e6:g}-{sc_hi / 1e6:g} MPa; 2D): tau_s = {tau_s / 1e6:.3f} MPa at M = {M:.3f}, "

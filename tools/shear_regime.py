@@ -28,6 +28,7 @@ import os
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RANGES = os.path.join(ROOT, "..", "shared", "data", "ice_and_water.json")
 G = 9.81
 
 
@@ -47,6 +48,14 @@ def shear(M, beta):
     return M * np.sqrt(beta / (3 * (1 + 2 * beta)))
 
 
+def laboratory_ranges(path=RANGES):
+    """(ice density, (sigma_t lo, hi), (sigma_c lo, hi)) from PATH, or the same numbers without the file."""
+    if not os.path.exists(path):
+        return 917.0, (0.7e6, 3.1e6), (5e6, 25e6)
+    r = json.load(open(path))
+    return r["ice_density_kg_m3"], tuple(r["ice_tensile_strength_Pa"]), tuple(r["ice_compressive_strength_Pa"])
+
+
 def lengths(sigma_t, tau_s, H, d, rho_i, rho_w):
     """(L_s / H, L_b / H): where the overhang breaks in shear and in bending."""
     L_s = 2 * tau_s / (3 * rho_i * G * H * (1 - d))
@@ -57,21 +66,15 @@ def lengths(sigma_t, tau_s, H, d, rho_i, rho_w):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--dim", type=int, default=2)
-    ap.add_argument("--ranges", default=os.path.join(ROOT, "..", "shared", "data", "ice_and_water.json"))
+    ap.add_argument("--ranges", default=RANGES)
     ap.add_argument("--M", type=float, default=0.33)
     ap.add_argument("--beta", type=float, default=0.1)
     ap.add_argument("--tensile", type=float, default=3.1e6, help="sigma_t [Pa]")
     ap.add_argument("--H", type=float, default=500.0, help="slab height [m]")
     ap.add_argument("--water-density", type=float, default=1000.0, help="the scene's water (sliding_block_2d: 1000)")
     a = ap.parse_args()
-    rho_i, rho_w = 917.0, a.water_density
-    if os.path.exists(a.ranges):
-        r = json.load(open(a.ranges))
-        rho_i = r["ice_density_kg_m3"]
-        st_lo, st_hi = r["ice_tensile_strength_Pa"]
-        sc_lo, sc_hi = r["ice_compressive_strength_Pa"]
-    else:
-        st_lo, st_hi, sc_lo, sc_hi = 0.7e6, 3.1e6, 5e6, 25e6
+    rho_w = a.water_density
+    rho_i, (st_lo, st_hi), (sc_lo, sc_hi) = laboratory_ranges(a.ranges)
     c_min, c_max = sc_lo / st_hi, sc_hi / st_lo
     f = lambda d: (1 - d) / math.sqrt(1 - rho_w / rho_i * d)
     f_min = min(f(0.6 * i / 100) for i in range(101))  # shear must govern for every D/H <= 0.6
