@@ -19,13 +19,17 @@ struct PolygonShape {
     r.object(n, {"type", "vertices"});
     PolygonShape p;
     p.vertices = r.pairs(r.required(n, "vertices"), 3);
+    if (twice_area(p.vertices) == 0) r.expected(n["vertices"], "a polygon with nonzero area");
+    return p;
+  }
+  // Twice the signed area (shoelace formula).
+  static double twice_area(const std::vector<std::array<double, 2>>& v) {
     double area2 = 0;
-    for (size_t i = 0; i < p.vertices.size(); ++i) {
-      const auto &a = p.vertices[i], &b = p.vertices[(i + 1) % p.vertices.size()];
+    for (size_t i = 0; i < v.size(); ++i) {
+      const auto &a = v[i], &b = v[(i + 1) % v.size()];
       area2 += a[0] * b[1] - b[0] * a[1];
     }
-    if (area2 == 0) r.expected(n["vertices"], "a polygon with nonzero area");
-    return p;
+    return area2;
   }
   void bounds(std::vector<double>& lo, std::vector<double>& hi) const {
     lo = {Range::inf, Range::inf}, hi = {-Range::inf, -Range::inf};

@@ -7,7 +7,7 @@ namespace cdmpm {
 
 Shape parse_shape(const SceneReader& r, const Node& n) {
   if (!n.j.is_object()) r.expected(n, "an object");
-  // A shape with `only_dim` (the polygon) exists in that dimension only.
+  // A shape with `only_dim` (the polygon in 2D, the prism in 3D) exists in that dimension only.
   const Strings types = registered_types<ShapeModel>([&]<class S>(S*) {
     if constexpr (requires { S::only_dim; }) return S::only_dim == r.dim();
     else return true;

@@ -1,5 +1,6 @@
 // shape.h - the shape registry: the regions that bodies are filled with and holes cut from (one file per
-// shape: shape/box.h, shape/ball.h, shape/polygon.h). A Shape answers point containment and its axis-aligned
+// shape: shape/box.h, shape/ball.h, shape/polygon.h,
+// shape/prism.h). A Shape answers point containment and its axis-aligned
 // bounding box; the loader reads it (parse_shape), checks it lies inside the domain, and can build no shape
 // of an unregistered type. Adding a shape: its file and one entry in the variant below.
 #pragma once
@@ -11,11 +12,12 @@
 #include "shape/ball.h"
 #include "shape/box.h"
 #include "shape/polygon.h"
+#include "shape/prism.h"
 
 namespace cdmpm {
 
 // The registry.
-using ShapeModel = std::variant<BoxShape, BallShape, PolygonShape>;
+using ShapeModel = std::variant<BoxShape, BallShape, PolygonShape, PrismShape>;
 
 class Shape {
  public:

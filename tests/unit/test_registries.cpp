@@ -60,7 +60,7 @@ TEST(Registries, PolygonIsNotA3DShape) {
   j["domain"]["size"] = {1.0, 1.0, 1.0};
   j["bodies"][0]["particles_per_cell"] = 8;
   j["bodies"][0]["shape"] = {{"type", "polygon"}, {"vertices", {{0, 0}, {1, 0}, {0, 1}}}};
-  expect_refused(j, {"bodies[0].shape.type", "\"box\", \"ball\"", "polygon"});
+  expect_refused(j, {"bodies[0].shape.type", "\"box\", \"ball\", \"prism\"", "polygon"});
 }
 
 TEST(Registries, UnknownBoundaryTypeIsRefused) {

@@ -1,6 +1,7 @@
 // test_seeding.cpp - seeding asks the boundaries what is solid (sim/seeding.h): a box of water over a sloping
 // bathymetry leaves the terrain empty (every lattice point below the profile, and only those, is left out), a
-// half-plane does the same, and a moving box obstacle (a grip) keeps the material seeded inside it.
+// half-plane does the same, and a moving box obstacle (a grip) keeps the material seeded inside it. A 3D prism
+// (shape/prism.h) is seeded at exactly the lattice points inside its x-z section and its y range.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,6 +56,45 @@ TEST(Seeding, MovingBoxKeepsTheMaterialItGrips) {
   grip.erase("velocity");
   Simulation<2> fixed(scene_from_json(pool(grip), "fixed.json"));
   EXPECT_EQ(fixed.particles.size(), lattice_count([](double x, double y) { return x > 2 && x < 4 && y > 2 && y < 4; }));
+}
+
+TEST(Seeding, PrismIsItsSectionExtrudedAlongY) {
+  // Section: the triangle (2, 1), (8, 1), (2, 7) in (x, z), i.e. x > 2, z > 1, x + z < 9; y in [1, 3].
+  nlohmann::json j = pool({{"type", "walls"}});
+  j["dim"] = 3;
+  j["domain"]["size"] = {10.0, 4.0, 10.0};
+  j["bodies"][0]["particles_per_cell"] = 8;
+  j["bodies"][0]["shape"] = {{"type", "prism"}, {"vertices", {{2, 1}, {8, 1}, {2, 7}}}, {"y", {1, 3}}};
+  Simulation<3> sim(scene_from_json(j, "prism.json"));
+  size_t expected = 0;  // lattice (k + 1/2) h, h = 0.25
+  for (int i = 0; i < 40; ++i)
+    for (int k = 0; k < 40; ++k) {
+      const double x = (i + 0.5) * 0.25, z = (k + 0.5) * 0.25;
+      expected += (x > 2 && z > 1 && x + z < 9) ? 8 : 0;  // y in [1, 3]: 8 lattice rows
+    }
+  EXPECT_EQ(sim.particles.size(), expected);
+  // The seeded volume is the prism's, 18 m2 x 2 m, to the lattice's resolution of the slanted face.
+  EXPECT_NEAR(sim.particles.size() * 0.25 * 0.25 * 0.25, 36.0, 0.5 * 6 * std::sqrt(2.0) * 2 * 0.25);
+  for (size_t q = 0; q < sim.particles.size(); ++q) {
+    const auto& x = sim.particles.x[q];
+    ASSERT_TRUE(x[1] > 1 && x[1] < 3) << "particle " << q;
+  }
+  // A prism is a 3D shape: a 2D scene refuses it, naming the types it has.
+  nlohmann::json flat = pool({{"type", "walls"}});
+  flat["bodies"][0]["shape"] = j["bodies"][0]["shape"];
+  try {
+    scene_from_json(flat, "flat.json");
+    FAIL() << "a 2D prism was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[0].shape.type"), std::string::npos) << e.what();
+  }
+  j["bodies"][0]["shape"]["y"] = {3, 1};
+  try {
+    scene_from_json(j, "prism.json");
+    FAIL() << "y_min > y_max was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[0].shape.y"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
