@@ -1,6 +1,6 @@
 // test_seeding.cpp - seeding asks the boundaries what is solid (sim/seeding.h): a box of water over a sloping
 // bathymetry leaves the terrain empty (every lattice point below the profile, and only those, is left out), a
-// half-plane does the same, and a moving box obstacle (a grip) keeps the material seeded inside it. A 3D prism
+// half-plane does the same (bounded by `within`, only inside its box), and a moving box obstacle (a grip) keeps the material seeded inside it. A 3D prism
 // (shape/prism.h) is seeded at exactly the lattice points inside its x-z section and its y range.
 #include <gtest/gtest.h>
 
@@ -47,6 +47,20 @@ TEST(Seeding, HalfPlaneLeavesItsSolidSideEmpty) {
   const Scene s = scene_from_json(pool({{"type", "half_plane"}, {"point", {5, 0}}, {"normal", {-1, 1}}}), "plane.json");
   Simulation<2> sim(s);
   EXPECT_EQ(sim.particles.size(), lattice_count([](double x, double y) { return y < x - 5; }));
+}
+
+TEST(Seeding, HalfPlaneWithinABoxIsSolidOnlyThere) {
+  // The same plane, y < x - 5, bounded to x <= 8: beyond x = 8 the water is seeded down to the bed.
+  const Scene s = scene_from_json(pool({{"type", "half_plane"}, {"point", {5, 0}}, {"normal", {-1, 1}},
+                                        {"within", {{"min", {0, 0}}, {"max", {8, 10}}}}}), "bounded.json");
+  Simulation<2> sim(s);
+  EXPECT_EQ(sim.particles.size(), lattice_count([](double x, double y) { return x <= 8 && y < x - 5; }));
+  // The grid condition acts inside the box only: a node below the plane beyond it keeps its velocity.
+  Vec<2> v(1, -1);
+  sim.boundaries.back()->apply(Vec<2>(9, 1), v);
+  EXPECT_EQ(v, Vec<2>(1, -1));
+  sim.boundaries.back()->apply(Vec<2>(7, 1), v);
+  EXPECT_NE(v, Vec<2>(1, -1));
 }
 
 TEST(Seeding, MovingBoxKeepsTheMaterialItGrips) {
