@@ -17,19 +17,19 @@ struct PolygonShape {
 
   static PolygonShape parse(const SceneReader& r, const Node& n) {
     r.object(n, {"type", "vertices"});
-    PolygonShape p;
-    p.vertices = r.pairs(r.required(n, "vertices"), 3);
-    if (twice_area(p.vertices) == 0) r.expected(n["vertices"], "a polygon with nonzero area");
-    return p;
+    return PolygonShape{read_vertices(r, n)};
   }
-  // Twice the signed area (shoelace formula).
-  static double twice_area(const std::vector<std::array<double, 2>>& v) {
+  // The key `vertices` of N: at least 3 pairs enclosing a nonzero area (twice the signed area by the shoelace
+  // formula). The prism (shape/prism.h) reads its section with it.
+  static std::vector<std::array<double, 2>> read_vertices(const SceneReader& r, const Node& n) {
+    std::vector<std::array<double, 2>> v = r.pairs(r.required(n, "vertices"), 3);
     double area2 = 0;
     for (size_t i = 0; i < v.size(); ++i) {
       const auto &a = v[i], &b = v[(i + 1) % v.size()];
       area2 += a[0] * b[1] - b[0] * a[1];
     }
-    return area2;
+    if (area2 == 0) r.expected(n["vertices"], "a polygon with nonzero area");
+    return v;
   }
   void bounds(std::vector<double>& lo, std::vector<double>& hi) const {
     lo = {Range::inf, Range::inf}, hi = {-Range::inf, -Range::inf};

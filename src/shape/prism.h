@@ -1,7 +1,6 @@
 // prism.h - the "prism" shape (3D only): a polygon in the x-z plane (`vertices`, [x, z] pairs, as the 2D
-// polygon) extruded along y over `y` = [y_min, y_max]. It is the 3D form of a 2D section, a wedge of a calving
-// front or a notch across a section of it (scenes/eqip_sermia_3d.json). Containment: y in range and the
-// polygon's even-odd test on (x, z).
+// polygon) extruded along y over `y` = [y_min, y_max]: the 3D form of a 2D section, such as a wedge of a calving
+// front or a notch across part of it. Containment: y in range and the polygon's even-odd test on (x, z).
 #pragma once
 
 #include <array>
@@ -21,8 +20,7 @@ struct PrismShape {
   static PrismShape parse(const SceneReader& r, const Node& n) {
     r.object(n, {"type", "vertices", "y"});
     PrismShape p;
-    p.section.vertices = r.pairs(r.required(n, "vertices"), 3);
-    if (PolygonShape::twice_area(p.section.vertices) == 0) r.expected(n["vertices"], "a polygon with nonzero area");
+    p.section.vertices = PolygonShape::read_vertices(r, n);
     const Node yn = r.required(n, "y");
     const std::vector<double> y = r.numbers(yn, 2);
     if (!(y[0] < y[1])) r.expected(yn, "[y_min, y_max] with y_min < y_max");

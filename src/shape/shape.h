@@ -1,8 +1,7 @@
 // shape.h - the shape registry: the regions that bodies are filled with and holes cut from (one file per
-// shape: shape/box.h, shape/ball.h, shape/polygon.h,
-// shape/prism.h). A Shape answers point containment and its axis-aligned
-// bounding box; the loader reads it (parse_shape), checks it lies inside the domain, and can build no shape
-// of an unregistered type. Adding a shape: its file and one entry in the variant below.
+// shape: shape/box.h, shape/ball.h, shape/polygon.h, shape/prism.h). A Shape answers point containment and its
+// axis-aligned bounding box; the loader reads it (parse_shape), checks it lies inside the domain, and can build
+// no shape of an unregistered type. Adding a shape: its file and one entry in the variant below.
 #pragma once
 
 #include <variant>
