@@ -14,7 +14,7 @@
 // The failure-plane angle is not asserted: the hydrofracture is vertical (81-82 deg against the band 40-65 deg;
 // docs/eqip_sermia.md).
 // The subaerial wedge that the observed width and dip describe (scenes/eqip_sermia_wedge_2d.json: a rigid wedge
-// 55 m wide dipping 52.5 deg, on its failure plane, a slip half-plane bounded to the glacier) slides down that
+// 55 m wide dipping 52.5 deg (its parameter wedge_dip), on its failure plane, a slip half-plane bounded to the glacier) slides down that
 // plane at g sin(dip) until it reaches the water: its centre of mass has moved g sin(dip) t^2 / 2 along the plane
 // at t = 1 s, within 5 % (the toe is 28 m above the water and reaches it after about 3 s).
 #include <gtest/gtest.h>
@@ -62,7 +62,10 @@ TEST(EqipSermia2D, WedgeSlidesOnItsFailurePlane) {
   const auto t = probes.numbers("time"), x = probes.numbers("wedge_position_x"), z = probes.numbers("wedge_position_y");
   ASSERT_GE(t.size(), 2u);
   ASSERT_NEAR(t.back(), 1.0, 1e-9);
-  const double dip = 52.5 * std::numbers::pi / 180, g = 9.81;
+  // The dip is the scene's own parameter, the gravity its resolved value.
+  const double dip = read_json(source_path("scenes/eqip_sermia_wedge_2d.json"))["parameters"]["wedge_dip"].get<double>() *
+                     std::numbers::pi / 180;
+  const double g = -read_json(dir / "run/scene.resolved.json")["gravity"][1].get<double>();
   const double dx = x.back() - x.front(), dz = z.back() - z.front();
   const double along = dx * std::cos(dip) - dz * std::sin(dip), across = dx * std::sin(dip) + dz * std::cos(dip);
   const double expected = 0.5 * g * std::sin(dip);
