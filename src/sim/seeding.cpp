@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "boundary/mirror.h"
 #include "scene/scene_reader.h"
 #include "sim/rigid_bodies.h"
 
@@ -14,12 +15,51 @@ namespace {
 template <int dim>
 using DVec = Eigen::Matrix<double, dim, 1>;
 
-// The run through the scene's particles in seeding order: how many so far, and which this process keeps.
+// A wall face that lies between two grid planes. The wall acts on the grid nodes on or beyond it
+// (boundary/walls.cpp) while particles are held at the face itself (keep_inside): material seeded within a cell of
+// it flows out of the grid's reach and piles up on the face with no pressure (a 3D channel 750 m wide at dx = 20 m
+// lost 2 m of its water level in 40 s). Seeding refuses that; a face no material touches (a lid) may lie anywhere.
+struct OffGridFace {
+  int axis;
+  double position, cells;  // the face's coordinate [m] and that in cells
+  std::string where, name;  // its path in the scene ("boundaries[0].faces[1]") and its name ("y+")
+};
+
+// The run through the scene's particles in seeding order: how many so far, and which this process keeps; the
+// off-grid wall faces and the first body (its path) seeded within a cell of one, checked before `keep` so that
+// every process of a distributed run finds the same.
 template <int dim>
 struct Seeding {
   const SeedFilter<dim>& keep;
   uint64_t seeded = 0;
+  std::vector<OffGridFace> off_grid = {};
+  const OffGridFace* touched = nullptr;
+  std::string toucher = {};
 };
+
+// The "+" faces of the scene's walls that are not on a grid plane (the "-" faces are at 0).
+std::vector<OffGridFace> off_grid_wall_faces(const Scene& scene) {
+  static const char* axes[3] = {"x", "y", "z"};
+  std::vector<OffGridFace> faces;
+  for (const BoundarySpec& b : scene.boundaries) {
+    if (b.type != "walls") continue;
+    const bool listed = b.json.contains("faces");
+    for (int a = 0; a < scene.dim; ++a) {
+      const std::string name = std::string(axes[a]) + "+";
+      std::string where = b.path;
+      if (listed) {
+        const auto& list = b.json.at("faces");
+        const auto it = std::find(list.begin(), list.end(), name);
+        if (it == list.end()) continue;
+        where += ".faces[" + std::to_string(it - list.begin()) + "]";
+      }
+      const double cells = scene.domain.size[a] / scene.domain.dx;
+      int index = 0;
+      if (!on_grid_plane(static_cast<Real>(cells), index)) faces.push_back({a, scene.domain.size[a], cells, where, name});
+    }
+  }
+  return faces;
+}
 
 // A rigid body's shape turned by its tilt about its hinge (or centre).
 template <int dim>
@@ -167,6 +207,31 @@ class BodySeeder {
     return level;
   }
 
+  // A fluid's pressure at depth d under its level, at rest. Its particles carry the compressed density rho0 / J(p)
+  // (the mass rho0 V0 in the volume V0 J), so the weight above depth d is the integral of rho0 g / J(p):
+  //   dp/dd = rho0 g / J(p),  p(0) = 0,
+  // integrated with classical Runge-Kutta in 16 equal steps (J(p) of the material's initial_state; for the Tait
+  // water p = K/gamma [(1 + (gamma - 1) rho0 g d / K)^(gamma/(gamma-1)) - 1]). p = rho0 g d instead leaves every
+  // column lighter than the pressure under it by about rho0 g d / (2K), and the water then rings at its vertical
+  // acoustic period (docs/validation.md, "What the water does around the rising blob").
+  double column_pressure(double rho0_g, double depth) const {
+    if (depth <= 0 || rho0_g <= 0) return rho0_g * std::max(0.0, depth);
+    const auto slope = [&](double p) {
+      const Real J = mat_.visit([&](const auto& model) {
+        return model.template initial_state<dim>(static_cast<Real>(p), Real(0)).J;
+      });
+      return rho0_g / static_cast<double>(J);
+    };
+    constexpr int steps = 16;
+    const double h = depth / steps;
+    double p = 0;
+    for (int i = 0; i < steps; ++i) {
+      const double k1 = slope(p), k2 = slope(p + 0.5 * h * k1), k3 = slope(p + 0.5 * h * k2), k4 = slope(p + h * k3);
+      p += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    return p;
+  }
+
   // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level
   // (`level_override`, when given, for the water in a crevasse). With `seeding`, each particle gets the next index
   // of the one-process array as its id, and only those seeding.keep accepts are added (the bed layer's: all).
@@ -186,8 +251,16 @@ class BodySeeder {
       Vec<dim> xp = x.template cast<Real>();
       if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
       const uint64_t index = seeding ? seeding->seeded++ : 0;
+      if (seeding && !seeding->touched)
+        for (const OffGridFace& f : seeding->off_grid)
+          if (x[f.axis] > f.position - scene_.domain.dx) {
+            seeding->touched = &f;
+            seeding->toucher = "bodies[" + std::to_string(&body_ - scene_.bodies.data()) + "]" +
+                               (crevasse_water_ ? ".crevasses" : "");
+          }
       if (seeding && seeding->keep && !seeding->keep(index, xp)) continue;
-      const Real pressure = static_cast<Real>(rho0 * g * std::max(0.0, level - x[up]));
+      const double depth = std::max(0.0, level - x[up]);
+      const Real pressure = static_cast<Real>(solid ? rho0 * g * depth : column_pressure(rho0 * g, depth));
       const InitialState<dim> st =
           mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0), static_cast<Real>(body_.lateral_stress_ratio)); });
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
@@ -228,7 +301,7 @@ template <int dim>
 uint64_t seed_bodies(const Scene& scene, std::vector<Material>& materials,
                  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
                  BedLayer<dim>* bed, const SeedFilter<dim>& keep) {
-  Seeding<dim> seeding{keep, 0};
+  Seeding<dim> seeding{keep, 0, off_grid_wall_faces(scene)};
   for (const bool solids : {true, false})
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
       const BodySpec& b = scene.bodies[i];
@@ -250,6 +323,15 @@ uint64_t seed_bodies(const Scene& scene, std::vector<Material>& materials,
     const BodySeeder<dim> seeder(scene, b, materials, boundaries, seeding, true);
     water.half_spacing = std::max(water.half_spacing, static_cast<Real>(0.5 * seeder.spacing()));
     seeder.seed(particles, nullptr);
+  }
+  if (const OffGridFace* f = seeding.touched) {
+    const std::string size = "domain.size[" + std::to_string(f->axis) + "]", dx = format_number(scene.domain.dx);
+    throw SceneError(scene.path + ": " + f->where + ": the wall face \"" + f->name + "\" lies at " + size + " = " +
+                     format_number(f->position) + " m, " + format_number(f->cells) + " cells of dx = " + dx + " m, and " +
+                     seeding.toucher + " is seeded within a cell of it; a wall acts on grid nodes, so a face that " +
+                     "material touches must lie on a grid plane: make " + size + " a whole number of cells (" +
+                     format_number(std::floor(f->cells) * scene.domain.dx) + " or " +
+                     format_number(std::ceil(f->cells) * scene.domain.dx) + " m)");
   }
   particles.next_id = seeding.seeded;
   return seeding.seeded;

@@ -7,7 +7,7 @@
 // Boundary::is_solid; a fluid body's points in the bed layer of a well-balanced bed fill that layer instead,
 // sim/bed_layer.h). With `hydrostatic` (default) bodies start in equilibrium under gravity, d being the
 // depth below the body's surface level, each material in its own initial state (InitialState of its model):
-//   fluids: pre-compressed to p = rho0 |g| d;
+//   fluids: pre-compressed to the pressure of a column at rest, dp/dd = rho0 |g| / J(p) (about rho0 |g| d);
 //   solids: lithostatic state sigma_v = -rho0 |g| d, sigma_h = k sigma_v, d measured from the body's own top in
 //           each lattice column (unless surface_level is given); k = lateral_stress_ratio, 0 by default (a
 //           laterally free slab on a bed: uniaxial, in equilibrium with a free vertical face), 1 cryostatic

@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "cli_helpers.h"
+#include "hydrostatic_column.h"
 #include "material/stress.h"
 #include "scene/scene_loader.h"
 #include "shape/crevasse_field.h"
@@ -242,7 +243,8 @@ TEST(Crevasses, SeedingEmptiesTheCrevassesAndKeepsTheRestOfTheIce) {
 // a slot between its bottom 100 - d_i and its level 100 - d_i + min(20, d_i), every lattice point there holds one
 // (the same lattice rounding as the ice), so the water's area is sum_i w min(20, d_i) up to one lattice row at the
 // bottom and one at the level in each of the w/h columns of a slot; and the water starts at rest and hydrostatic
-// below its level: p = rho_w g (level - y) from the particle's own volume ratio, within the round-off of J
+// below its level: the pressure of a column of compressed water at rest (hydrostatic_column.h; about
+// rho_w g (level - y)) from the particle's own volume ratio, within the round-off of J
 // (single-precision reals: 1e-6 relative of the bulk modulus's 1e6 Pa, 1 Pa). The ice is what it is dry.
 TEST(Crevasses, WaterFillsEachCrevasseToItsLevelAtRestAndHydrostatic) {
   nlohmann::json c = {{"seed", 3}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 30}, {"depth_std", 10}, {"width", 4}};
@@ -270,7 +272,7 @@ TEST(Crevasses, WaterFillsEachCrevasseToItsLevelAtRestAndHydrostatic) {
     ASSERT_TRUE(level_at(sim.particles.x[q][0], sim.particles.x[q][1], level)) << "water particle " << q << " outside the water";
     EXPECT_EQ(sim.particles.v[q], Vec<2>::Zero());
     const double p = particle_pressure(sim.materials[water], sim.particles, q);
-    worst = std::max(worst, std::abs(p - 1000 * 9.81 * (level - sim.particles.x[q][1])));
+    worst = std::max(worst, std::abs(p - testing::tait_column_pressure(1000, 9.81, level - sim.particles.x[q][1], 1e6)));
     ++in_water;
   }
   EXPECT_LT(worst, 1.0);

@@ -2,7 +2,8 @@
 // zero-padded in 2D). Frame 0 of scenes/calving_front_2d.json holds the initial equilibrium state that the
 // seeding prescribes (src/sim/seeding.cpp), which the stress must reproduce:
 //   ice   (lithostatic, laterally free): sigma_yy = -rho_i g (H - y), sigma_xx = sigma_xy = 0;
-//   water (hydrostatic):                 sigma = -p I with p = rho_w g (h - y);
+//   water (hydrostatic):                 sigma = -p I with p the pressure of a column of compressed water at
+//                                        rest (hydrostatic_column.h; about rho_w g (h - y));
 // and for every particle the frame's "pressure" is -tr(sigma)/2; ice is intact (damage 0) and water has no
 // damage (NaN: the field belongs to ice).
 // Tolerance: the seeding's Newton solve stops at a residual of 64 eps kappa (ice), the equation of state is
@@ -15,6 +16,7 @@
 
 #include "cli_helpers.h"
 #include "core/types.h"
+#include "hydrostatic_column.h"
 #include "vtu_reader.h"
 
 namespace cdmpm::testing {
@@ -61,7 +63,7 @@ TEST(Frames, StressTensorIsTheSeededEquilibriumState) {
       EXPECT_EQ(damage[q], 0.f) << "ice particle " << q << ": intact at seeding";
     } else {  // water
       ++n_water;
-      EXPECT_NEAR(s[0], -rho_w * g * (h - y), tol) << "water particle " << q << " at y = " << y;
+      EXPECT_NEAR(s[0], -tait_column_pressure(rho_w, g, h - y, K_w), tol) << "water particle " << q << " at y = " << y;
       EXPECT_EQ(s[0], s[4]) << "water particle " << q;
       EXPECT_EQ(s[1], 0.f) << "water particle " << q;
       EXPECT_TRUE(std::isnan(damage[q])) << "water particle " << q << ": damage is an ice field, absent (NaN) on water";

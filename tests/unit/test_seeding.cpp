@@ -2,7 +2,8 @@
 // bathymetry leaves the terrain empty (every lattice point below the profile, and only those, is left out), a
 // half-plane does the same (bounded by `within`, only inside its box), and a moving box obstacle (a grip) keeps
 // the material seeded inside it. A 3D prism (shape/prism.h) is seeded at exactly the lattice points inside its
-// x-z section and its y range.
+// x-z section and its y range. Material seeded within a cell of a wall face that lies between two grid planes is
+// refused, naming the face, the body and the sizes on the grid on either side.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,6 +42,40 @@ size_t lattice_count(F&& solid) {
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 24; ++j) n += !solid((i + 0.5) * 0.25, (j + 0.5) * 0.25);
   return n;
+}
+
+// The message with which building the simulation of J (seeding it) fails; empty if it is built.
+std::string seeding_refusal(const nlohmann::json& j) {
+  try {
+    Simulation<2> sim(scene_from_json(j, "refused.json"));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Seeding, MaterialAgainstAWallFaceOffTheGridIsRefused) {
+  // x+ at 10.25 m, 20.5 cells of 0.5 m: the wall acts on the nodes from 10.5 m, the particles stop at 10.25 m.
+  nlohmann::json j = pool({{"type", "walls"}, {"faces", {"x-", "x+", "y-"}}});
+  j["boundaries"].erase(0);  // pool()'s own walls (all faces)
+  j["domain"]["size"] = {10.25, 10.0};
+  j["bodies"][0]["shape"]["max"] = {10.25, 6.0};
+  const std::string touching = seeding_refusal(j);
+  EXPECT_NE(touching.find("refused.json: boundaries[0].faces[1]: the wall face \"x+\" lies at domain.size[0] = 10.25 m, "
+                          "20.5 cells of dx = 0.5 m, and bodies[0] is seeded within a cell of it"),
+            std::string::npos)
+      << touching;
+  EXPECT_NE(touching.find("(10 or 10.5 m)"), std::string::npos) << touching;
+  // All faces by default: the walls object is named.
+  j["boundaries"][0].erase("faces");
+  EXPECT_NE(seeding_refusal(j).find("refused.json: boundaries[0]: the wall face \"x+\""), std::string::npos);
+  // Material more than a cell from the face, or an off-grid face no material touches (y+ at 10.25 m, a lid over
+  // water 6 m deep), is accepted; so is the face on a grid plane.
+  j["bodies"][0]["shape"]["max"] = {9.5, 6.0};
+  EXPECT_EQ(seeding_refusal(j), "");
+  j["domain"]["size"] = {10.0, 10.25};
+  j["bodies"][0]["shape"]["max"] = {10.0, 6.0};
+  EXPECT_EQ(seeding_refusal(j), "");
 }
 
 TEST(Seeding, WaterOverSlopingBathymetryLeavesTheTerrainEmpty) {
