@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 #include "boundary/mirror.h"
@@ -207,29 +208,42 @@ class BodySeeder {
     return level;
   }
 
-  // A fluid's pressure at depth d under its level, at rest. Its particles carry the compressed density rho0 / J(p)
-  // (the mass rho0 V0 in the volume V0 J), so the weight above depth d is the integral of rho0 g / J(p):
+  // The pressure of a fluid column at rest at the depth d of each of its points below `level` (0 above it). Its
+  // particles carry the compressed density rho0 / J(p) (the mass rho0 V0 in the volume V0 J), so the weight above
+  // depth d is the integral of rho0 g / J(p):
   //   dp/dd = rho0 g / J(p),  p(0) = 0,
-  // integrated with classical Runge-Kutta in 16 equal steps (J(p) of the material's initial_state; for the Tait
-  // water p = K/gamma [(1 + (gamma - 1) rho0 g d / K)^(gamma/(gamma-1)) - 1]). p = rho0 g d instead leaves every
-  // column lighter than the pressure under it by about rho0 g d / (2K), and the water then rings at its vertical
-  // acoustic period (docs/validation.md, "What the water does around the rising blob").
-  double column_pressure(double rho0_g, double depth) const {
-    if (depth <= 0 || rho0_g <= 0) return rho0_g * std::max(0.0, depth);
+  // integrated with classical Runge-Kutta down the column, point after point in order of depth, in steps of at most
+  // the lattice spacing (J(p) of the material's initial_state; for the Tait water
+  // p = K/gamma [(1 + (gamma - 1) rho0 g d / K)^(gamma/(gamma-1)) - 1]). p = rho0 g d instead leaves every column
+  // lighter than the pressure under it by about rho0 g d / (2K), and the water then rings at its vertical acoustic
+  // period (docs/validation.md, "What the water does around the rising blob").
+  std::vector<double> column_pressures(const std::vector<DVec<dim>>& column, double level, double rho0_g) const {
+    constexpr int up = vertical_axis<dim>;
     const auto slope = [&](double p) {
       const Real J = mat_.visit([&](const auto& model) {
         return model.template initial_state<dim>(static_cast<Real>(p), Real(0)).J;
       });
       return rho0_g / static_cast<double>(J);
     };
-    constexpr int steps = 16;
-    const double h = depth / steps;
-    double p = 0;
-    for (int i = 0; i < steps; ++i) {
-      const double k1 = slope(p), k2 = slope(p + 0.5 * h * k1), k3 = slope(p + 0.5 * h * k2), k4 = slope(p + h * k3);
-      p += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    std::vector<size_t> order(column.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return column[a][up] > column[b][up]; });
+    std::vector<double> pressure(column.size(), 0.0);
+    double d = 0, p = 0;
+    for (const size_t k : order) {
+      const double target = level - column[k][up];
+      if (target > d) {
+        const int steps = std::max(1, static_cast<int>(std::ceil((target - d) / h_ - 1e-9)));
+        const double h = (target - d) / steps;
+        for (int i = 0; i < steps; ++i) {
+          const double k1 = slope(p), k2 = slope(p + 0.5 * h * k1), k3 = slope(p + 0.5 * h * k2), k4 = slope(p + h * k3);
+          p += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        }
+        d = target;
+      }
+      pressure[k] = p;
     }
-    return p;
+    return pressure;
   }
 
   // Solids: depth below the body's own top surface in this column (a sloping slab); others: below the level
@@ -247,7 +261,10 @@ class BodySeeder {
     if (body_.solitary && !column.empty()) level = body_.solitary->surface(column.front()[0]);
     if (level_override) level = *level_override;
     const Real rho0 = mat_.density();
-    for (const auto& x : column) {
+    std::vector<double> fluid_pressure;  // fluids: down the column from its level (column_pressures)
+    if (!solid && loaded) fluid_pressure = column_pressures(column, level, rho0 * g);
+    for (size_t i = 0; i < column.size(); ++i) {
+      const DVec<dim>& x = column[i];
       Vec<dim> xp = x.template cast<Real>();
       if (mat_.traits().rigid) xp = self_.pivot + self_.R * (xp - self_.pivot);
       const uint64_t index = seeding ? seeding->seeded++ : 0;
@@ -259,8 +276,8 @@ class BodySeeder {
                                (crevasse_water_ ? ".crevasses" : "");
           }
       if (seeding && seeding->keep && !seeding->keep(index, xp)) continue;
-      const double depth = std::max(0.0, level - x[up]);
-      const Real pressure = static_cast<Real>(solid ? rho0 * g * depth : column_pressure(rho0 * g, depth));
+      const Real pressure =
+          static_cast<Real>(solid ? rho0 * g * std::max(0.0, level - x[up]) : (loaded ? fluid_pressure[i] : 0.0));
       const InitialState<dim> st =
           mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0), static_cast<Real>(body_.lateral_stress_ratio)); });
       // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
