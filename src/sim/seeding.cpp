@@ -38,25 +38,24 @@ struct Seeding {
   std::string toucher = {};
 };
 
-// The "+" faces of the scene's walls that are not on a grid plane (the "-" faces are at 0).
-std::vector<OffGridFace> off_grid_wall_faces(const Scene& scene) {
-  static const char* axes[3] = {"x", "y", "z"};
+// The "+" faces that the scene's boundaries close (Boundary::closed_faces: the walls') and that are not on a grid
+// plane; the "-" faces are at 0. `boundaries` are built from scene.boundaries in order.
+template <int dim>
+std::vector<OffGridFace> off_grid_wall_faces(const Scene& scene, const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries) {
   std::vector<OffGridFace> faces;
-  for (const BoundarySpec& b : scene.boundaries) {
-    if (b.type != "walls") continue;
-    const bool listed = b.json.contains("faces");
-    for (int a = 0; a < scene.dim; ++a) {
-      const std::string name = std::string(axes[a]) + "+";
-      std::string where = b.path;
-      if (listed) {
-        const auto& list = b.json.at("faces");
-        const auto it = std::find(list.begin(), list.end(), name);
-        if (it == list.end()) continue;
-        where += ".faces[" + std::to_string(it - list.begin()) + "]";
-      }
+  for (size_t i = 0; i < boundaries.size(); ++i) {
+    const Strings closed = boundaries[i]->closed_faces();
+    const BoundarySpec& spec = scene.boundaries[i];
+    for (size_t k = 0; k < closed.size(); ++k) {
+      const std::string& name = closed[k];
+      if (name[1] != '+') continue;
+      const int a = name[0] - 'x';
       const double cells = scene.domain.size[a] / scene.domain.dx;
       int index = 0;
-      if (!on_grid_plane(static_cast<Real>(cells), index)) faces.push_back({a, scene.domain.size[a], cells, where, name});
+      if (on_grid_plane(static_cast<Real>(cells), index)) continue;
+      // A listed face is named by its entry, the default (all faces) by the boundary.
+      const std::string where = spec.path + (spec.json.contains("faces") ? ".faces[" + std::to_string(k) + "]" : "");
+      faces.push_back({a, scene.domain.size[a], cells, where, name});
     }
   }
   return faces;
@@ -318,7 +317,7 @@ template <int dim>
 uint64_t seed_bodies(const Scene& scene, std::vector<Material>& materials,
                  const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries, Particles<dim>& particles,
                  BedLayer<dim>* bed, const SeedFilter<dim>& keep) {
-  Seeding<dim> seeding{keep, 0, off_grid_wall_faces(scene)};
+  Seeding<dim> seeding{keep, 0, off_grid_wall_faces(scene, boundaries)};
   for (const bool solids : {true, false})
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
       const BodySpec& b = scene.bodies[i];

@@ -14,9 +14,10 @@
 // The failure-plane angle is not asserted: the hydrofracture is vertical (81-82 deg against the band 40-65 deg;
 // docs/eqip_sermia.md).
 // The subaerial wedge that the observed width and dip describe (scenes/eqip_sermia_wedge_2d.json: a rigid wedge
-// 55 m wide dipping 52.5 deg (its parameter wedge_dip), on its failure plane, a slip half-plane bounded to the glacier) slides down that
-// plane at g sin(dip) until it reaches the water: its centre of mass has moved g sin(dip) t^2 / 2 along the plane
-// at t = 1 s, within 5 % (the toe is 28 m above the water and reaches it after about 3 s).
+// 55 m wide dipping 52.5 deg (its parameter wedge_dip), on its failure plane, a slip half-plane bounded to the
+// glacier) slides down that plane at g sin(dip) until it reaches the water: its centre of mass has moved
+// g sin(dip) t^2 / 2 along the plane at t = 1 s, within 5 % (the toe is 28 m above the water and reaches it after
+// about 3 s).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -25,10 +25,14 @@ nlohmann::json pool(const nlohmann::json& boundary) {
           {"boundaries", {{{"type", "walls"}}, boundary}}};
 }
 
-// The message with which loading J fails; empty if it loads.
-std::string refusal(const nlohmann::json& j) {
+// The message with which loading J fails (with `seed`, loading it and building its 2D simulation, which seeds it);
+// empty if it does not fail.
+std::string refusal(const nlohmann::json& j, bool seed = false) {
   try {
-    scene_from_json(j, "refused.json");
+    const Scene s = scene_from_json(j, "refused.json");
+    if (seed) {
+      const Simulation<2> sim(s);
+    }
   } catch (const SceneError& e) {
     return e.what();
   }
@@ -44,23 +48,13 @@ size_t lattice_count(F&& solid) {
   return n;
 }
 
-// The message with which building the simulation of J (seeding it) fails; empty if it is built.
-std::string seeding_refusal(const nlohmann::json& j) {
-  try {
-    Simulation<2> sim(scene_from_json(j, "refused.json"));
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(Seeding, MaterialAgainstAWallFaceOffTheGridIsRefused) {
   // x+ at 10.25 m, 20.5 cells of 0.5 m: the wall acts on the nodes from 10.5 m, the particles stop at 10.25 m.
   nlohmann::json j = pool({{"type", "walls"}, {"faces", {"x-", "x+", "y-"}}});
   j["boundaries"].erase(0);  // pool()'s own walls (all faces)
   j["domain"]["size"] = {10.25, 10.0};
   j["bodies"][0]["shape"]["max"] = {10.25, 6.0};
-  const std::string touching = seeding_refusal(j);
+  const std::string touching = refusal(j, true);
   EXPECT_NE(touching.find("refused.json: boundaries[0].faces[1]: the wall face \"x+\" lies at domain.size[0] = 10.25 m, "
                           "20.5 cells of dx = 0.5 m, and bodies[0] is seeded within a cell of it"),
             std::string::npos)
@@ -68,14 +62,14 @@ TEST(Seeding, MaterialAgainstAWallFaceOffTheGridIsRefused) {
   EXPECT_NE(touching.find("(10 or 10.5 m)"), std::string::npos) << touching;
   // All faces by default: the walls object is named.
   j["boundaries"][0].erase("faces");
-  EXPECT_NE(seeding_refusal(j).find("refused.json: boundaries[0]: the wall face \"x+\""), std::string::npos);
+  EXPECT_NE(refusal(j, true).find("refused.json: boundaries[0]: the wall face \"x+\""), std::string::npos);
   // Material more than a cell from the face, or an off-grid face no material touches (y+ at 10.25 m, a lid over
   // water 6 m deep), is accepted; so is the face on a grid plane.
   j["bodies"][0]["shape"]["max"] = {9.5, 6.0};
-  EXPECT_EQ(seeding_refusal(j), "");
+  EXPECT_EQ(refusal(j, true), "");
   j["domain"]["size"] = {10.0, 10.25};
   j["bodies"][0]["shape"]["max"] = {10.0, 6.0};
-  EXPECT_EQ(seeding_refusal(j), "");
+  EXPECT_EQ(refusal(j, true), "");
 }
 
 TEST(Seeding, WaterOverSlopingBathymetryLeavesTheTerrainEmpty) {
