@@ -4,7 +4,8 @@
 //   cdmpm run [SCENE] --resume DIR [--set time.end=...]   (scene and --set values from DIR/run.json)
 //   cdmpm run SCENE --dry-run --ranks N [--threads T] [--core-rate R]   (the partition of a distributed run on N
 //         ranks, without its particles: per-rank particles, blocks, halo bytes, memory; run/run_plan.h; prints JSON)
-//   cdmpm check SCENE... [--set path=value ...]   (validity and the estimated cost of each run, run/run_estimate.h)
+//   cdmpm check SCENE... [--set path=value ...]   (validity, the estimated cost of each run (run/run_estimate.h) and
+//         its particles, seeded keeping none: every refusal of seeding too)
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
 //   cdmpm linear-waves DIR --depth h [--wall x] [--gravity g] [--box a w]
@@ -45,19 +46,26 @@ bool speaks() {
 }
 }  // namespace
 
-// `cdmpm check`: each scene's validity, a summary and the estimate of its run; exit 2 if any is invalid or too
-// big for this machine.
+// `cdmpm check`: each scene's validity, a summary, the estimate of its run and its seeded particle count; exit 2 if
+// any is invalid, too big for this machine or refused by seeding.
 int check_scenes(const std::vector<std::string>& paths, const std::vector<std::string>& overrides) {
   int status = 0;
   for (const std::string& path : paths) {
     try {
       const cdmpm::Scene scene = cdmpm::load_scene(path, overrides);
       const cdmpm::RunEstimate e = cdmpm::estimate_run(scene);
+      cdmpm::check_run_fits(scene, e);
+      // Seeded once keeping no particle, as --dry-run does (after the size check, so a scene too big is not walked):
+      // what seeding refuses (a body that seeds nothing, material against a wall face off the grid) is refused here
+      // too, and the particle count is exact.
+      const nlohmann::json seeded = cdmpm::plan_run(scene, cdmpm::PlanOptions{});
       std::cout << scene.path << ": valid " << scene.dim << "D scene '" << scene.name << "', " << scene.materials.size()
                 << " material(s), " << scene.bodies.size() << " body(ies), " << scene.boundaries.size()
                 << " boundary(ies), " << scene.probes.size() << " probe(s), end time " << scene.time.end << " s\n  "
-                << cdmpm::describe(e) << "\n";
-      cdmpm::check_run_fits(scene, e);
+                << cdmpm::describe(e) << "\n  seeded: " << seeded["particles"].get<uint64_t>() << " particles";
+      if (const uint64_t bed = seeded["bed_layer_particles"].get<uint64_t>(); bed > 0)
+        std::cout << " and " << bed << " fixed bed-layer particles";
+      std::cout << "\n";
     } catch (const std::exception& e) {
       std::cerr << "cdmpm: error: " << e.what() << "\n";
       status = 2;

@@ -23,8 +23,8 @@ class HalfPlane final : public Boundary<dim> {
     if (norm == 0) r.expected(n["normal"], "a nonzero vector");
     for (double& c : normal) c /= std::sqrt(norm);
     normal_ = to_vec<dim>(normal).normalized();
-    lo_ = Vec<dim>::Constant(-Range::inf), hi_ = Vec<dim>::Constant(Range::inf);
-    if (n.has("within")) {
+    bounded_ = n.has("within");
+    if (bounded_) {
       const Node w = n["within"];
       r.object(w, {"min", "max"});
       std::vector<double> lo, hi;
@@ -39,8 +39,11 @@ class HalfPlane final : public Boundary<dim> {
   bool is_solid(const Vec<dim>& x) const override { return inside_box(x) && (x - point_).dot(normal_) < 0; }
 
  private:
-  bool inside_box(const Vec<dim>& x) const { return (x.array() >= lo_.array()).all() && (x.array() <= hi_.array()).all(); }
-  Vec<dim> point_, normal_, lo_, hi_;
+  bool inside_box(const Vec<dim>& x) const {
+    return !bounded_ || ((x.array() >= lo_.array()).all() && (x.array() <= hi_.array()).all());
+  }
+  Vec<dim> point_, normal_, lo_, hi_;  // lo_, hi_: the box `within`, if bounded_
+  bool bounded_ = false;
 };
 
 }  // namespace

@@ -3,8 +3,8 @@
 // 200 m cliff grounded in 100 m of water, settled for 10 s, its water-filled crevasses, and the water's pressure in
 // the damaged band (ice key "hydrofracture", crack water level 200 m; docs/eqip_sermia.md#hydrofracture-through-the-
 // damaged-band-poro-damage), at the validation resolution dx = 5 m, but over the first 600 m of the fjord (x+ wall
-// at 1400 m: its reflection reaches the 250 m gauge after t = 20 s) and to t = 17 s, when the first crest has
-// passed the 250 m gauge. About 37,000 particles, one minute on 2 cores.
+// at 1400 m: its reflection reaches the 250 m gauge after t = 20 s; the --set values of
+// scenes/eqip_sermia_2d_short.set) and to t = 17 s, when the first crest has passed the 250 m gauge. About 37,000 particles, one minute on 2 cores.
 // What is asserted (the observations and the issue's bands, not the program's output; Luethi & Vieli 2016 as in
 // ../shared/data/eqip_sermia_2014.json):
 //   - the cliff calves by itself: a first iceberg is detected, as high as the cliff (the 200 m cliff failed through
@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -32,11 +33,15 @@ namespace {
 
 TEST(EqipSermia2D, ShortFjordCliffCalvesAndRaisesAWave) {
   TempDir dir;
-  const std::string gauge =
-      R"([{"name": "gauge_250m", "type": "wave_gauge", "material": "water", "position": [1050], "still_level": 150}])";
-  const auto r = run_cdmpm({"run", source_path("scenes/eqip_sermia_2d.json"), "--out", dir / "run", "--quiet",
-                            "--set", "time.end=17", "--set", "parameters.fjord_end=1400", "--set", "output.frames=false",
-                            "--set", "probes.list=" + gauge});
+  std::vector<std::string> args = {"run", source_path("scenes/eqip_sermia_2d.json"), "--out", dir / "run", "--quiet",
+                                   "--set", "time.end=17", "--set", "output.frames=false"};
+  std::ifstream short_fjord(source_path("scenes/eqip_sermia_2d_short.set"));
+  ASSERT_TRUE(short_fjord) << "scenes/eqip_sermia_2d_short.set";
+  int sets = 0;
+  for (std::string line; std::getline(short_fjord, line);)
+    if (!line.empty() && line[0] != '#') args.insert(args.end(), {"--set", line}), ++sets;
+  ASSERT_EQ(sets, 2) << "the short fjord's --set values: its end and its one gauge";
+  const auto r = run_cdmpm(args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto s = read_json(dir / "run/summary.json");
   ASSERT_TRUE(s["first_iceberg"].is_object()) << "the cliff should calve before t = 17 s";

@@ -2,7 +2,7 @@
 // stop before the run starts, with exit code 2, a message naming the key and what was expected (or the run's
 // estimate), and nothing written: physical ranges of material keys and gravity, the up-front estimate of memory
 // and frames (run/run_estimate.h, with --force as the override), the grid lattice bound, and a body that seeds
-// no particle. `cdmpm check` takes several scenes and reports each one's estimate.
+// no particle. `cdmpm check` takes several scenes and reports each one's estimate and seeded particles.
 #include <gtest/gtest.h>
 
 #include "cli_helpers.h"
@@ -66,6 +66,28 @@ TEST(RunLimits, CheckReportsEachScenesEstimate) {
   const auto bad = run_cdmpm({"check", kScene, source_path("tests/bad_scenes/dx_negative.json")});
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("calving_front_2d.json: valid"), std::string::npos) << "the good scene is still reported";
+}
+
+// `cdmpm check` seeds the scene keeping no particle: it counts exactly the particles a run seeds, and refuses what
+// seeding refuses (a body that seeds nothing; material within a cell of a wall face off the grid), naming the key.
+TEST(RunLimits, CheckSeedsTheSceneAndRefusesWhatSeedingRefuses) {
+  TempDir dir;
+  const auto run = run_cdmpm({"run", kScene, "--out", dir / "out", "--quiet", "--steps", "1", "--set", "output.frames=false"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const uint64_t seeded = read_json(dir / "out/summary.json").at("particles").get<uint64_t>();
+  const auto r = run_cdmpm({"check", kScene});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("seeded: " + std::to_string(seeded) + " particles\n"), std::string::npos)
+      << seeded << " seeded by the run; " << r.output;
+  const auto empty = run_cdmpm({"check", kScene, "--set", "bodies.1.shape.max.1=0.1", "--set", "bodies.1.shape.min.1=0.05"});
+  EXPECT_EQ(empty.exit_code, 2) << empty.output;
+  EXPECT_NE(empty.output.find("bodies[1]: seeds no particle"), std::string::npos) << empty.output;
+  // The fjord's end wall (x+) half a cell past a grid plane, with the water against it.
+  const auto off = run_cdmpm({"check", kScene, "--set", "parameters.fjord_end=2002.5"});
+  EXPECT_EQ(off.exit_code, 2) << off.output;
+  EXPECT_NE(off.output.find("calving_front_2d.json: boundaries[0].faces[1]: the wall face \"x+\" lies at domain.size[0] = "
+                            "2002.5 m, 400.5 cells"), std::string::npos) << off.output;
+  EXPECT_EQ(off.output.find("valid"), std::string::npos) << "a refused scene is not called valid: " << off.output;
 }
 
 // A distributed run's machine holds only its ranks' share of the particles (run/run_estimate.h): a scene too big
