@@ -63,6 +63,7 @@ struct Ice {
   Real p0_initial = 0;      // pre-consolidation pressure of intact ice [Pa]
   Real alpha_initial = 0;   // alpha giving p0_initial
   PoroDamage hydrofracture;  // water pressure in damaged ice (off unless the scene sets "hydrofracture")
+  Real flip = 0;             // the FLIP share of the velocity update (transfer/flip.h)
 
   static Ice parse(const SceneReader& r, const Node& n);
 
@@ -127,8 +128,9 @@ struct Ice {
 // Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
 inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
-               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture"});
+               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture", "flip"});
   Ice ice;
+  ice.flip = static_cast<Real>(r.number(m, "flip", {0, 1}, 0.0));
   // Bounds of real materials, which keep the time step and the state representable.
   ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), {1, 1e5}, " kg/m^3"));
   const double E = r.number(r.required(m, "youngs_modulus"), {0, 1e12, true, false}, " Pa");

@@ -37,6 +37,13 @@ struct Material {
   }
   std::string_view type() const { return visit([](const auto& m) { return std::decay_t<decltype(m)>::type; }); }
   Real density() const { return visit([](const auto& m) { return m.density(); }); }
+  // The water's options against the one-field drag (material/water.h); other models have neither.
+  bool j_bar() const {
+    return visit([](const auto& m) { if constexpr (requires { m.j_bar; }) return m.j_bar; else return false; });
+  }
+  Real flip() const {
+    return visit([](const auto& m) -> Real { if constexpr (requires { m.flip; }) return m.flip; else return Real(0); });
+  }
 };
 
 // Reads the material `name` from its scene object (its "type" names a registered model, which reads the rest).

@@ -5,7 +5,11 @@
 // State: the total volume ratio J = V / V0, advanced by the discrete continuity equation
 //   J <- J (1 + dt tr C_p)                  (dJ/dt = J div v, C_p the particle's velocity gradient).
 // Viscosity adds the explicit diffusion limit dt <= dx^2 rho / (2 dim mu).
-// Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0, at most 1e6 Pa s) - docs/scenes.md.
+// Two options against the spurious drag of one velocity field at small acoustic time steps (docs/water.md,
+// "Buoyancy: J-bar and FLIP"): `j_bar`, the stress from the mean J of the particles of this material around the
+// same grid node (material/j_bar.h), and `flip`, the share of FLIP in the velocity update (transfer/flip.h).
+// Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0, at most 1e6 Pa s), j_bar (false),
+// flip (0, in [0, 1]) - docs/scenes.md.
 #pragma once
 
 #include "material/tait_state.h"
@@ -17,12 +21,16 @@ struct Water : TaitState {
   static constexpr MaterialTraits traits{.fluid = true};
 
   static Water parse(const SceneReader& r, const Node& n) {
-    r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity"});
+    r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity", "j_bar", "flip"});
     Water w;
     w.eos = read_eos(r, n);
     w.eos.mu = static_cast<Real>(r.number(n, "viscosity", {0, 1e6}, 0.0));
+    w.j_bar = r.boolean(n, "j_bar", false);
+    w.flip = static_cast<Real>(r.number(n, "flip", {0, 1}, 0.0));
     return w;
   }
+  bool j_bar = false;  // the stress from the cell-mean J (material/j_bar.h)
+  Real flip = 0;       // the FLIP share of the velocity update (transfer/flip.h)
   Real stable_dt(Real dx, int dim) const {
     return eos.mu > 0 ? dx * dx * eos.rho0 / (Real(2 * dim) * eos.mu) : no_time_step_limit;
   }

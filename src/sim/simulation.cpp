@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "grid/grid_update.h"
+#include "material/j_bar.h"
 #include "material/constitutive_update.h"
 #include "material/stress.h"
 #include "parallel/decomposition.h"
@@ -18,6 +19,7 @@
 #include "sim/sinks.h"
 #include "sim/time_step.h"
 #include "transfer/g2p.h"
+#include "transfer/flip.h"
 #include "transfer/p2g.h"
 
 namespace cdmpm {
@@ -48,6 +50,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
 #endif
   crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
+  for (const Material& m : materials) any_flip_ |= m.flip() > 0, any_j_bar_ |= m.j_bar();
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
@@ -162,22 +165,22 @@ void Simulation<dim>::step_until(double t) {
 template <int dim>
 void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::Bin, [&] { bin(); });
+  if (any_flip_) timer_.run(Phase::FlipTransfer, [&] { flip_transfer(); });
   timer_.run(Phase::P2G, [&] {
-#ifdef CDMPM_MPI
-    if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);  // the bed layer's too, as below
-#endif
-    if (!bed_.empty()) {  // the water's velocity along the bed, for the bed layer (sim/bed_layer.h)
-      p2g(particles, materials, bins_, grid, Real(0));
-      bed_.take_velocity(grid);
-      grid.clear();
+    if (any_j_bar_) {  // the stress at the cell-mean J (material/j_bar.h), the particles' own J kept
+      cell_mean_J(particles, materials, grid, bins_, J_state_);
+      std::swap(particles.J, J_state_);
     }
-    p2g(particles, materials, bins_, grid, dt);
-    if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);
+    p2g_phase(dt);
+    if (any_j_bar_) std::swap(particles.J, J_state_);
   });
   timer_.run(Phase::BoundaryFold, [&] { boundary_fold(); });
   timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
-  timer_.run(Phase::G2P, [&] { g2p(particles, grid, bins_); });
+  timer_.run(Phase::G2P, [&] {
+    g2p(particles, grid, bins_);
+    if (any_flip_) flip_blend(particles, materials, flip_u_);
+  });
   timer_.run(Phase::ConstitutiveUpdate, [&] {
     crack_starts.before_update(particles);
     constitutive_update(particles, materials, dt);
@@ -197,6 +200,35 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
+}
+
+// Mass, momentum and the stress impulse to the grid (transfer/p2g.h), the bed layer's too.
+template <int dim>
+void Simulation<dim>::p2g_phase(Real dt) {
+#ifdef CDMPM_MPI
+  if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);  // the bed layer's too, as below
+#endif
+  if (!bed_.empty()) {  // the water's velocity along the bed, for the bed layer (sim/bed_layer.h)
+    p2g(particles, materials, bins_, grid, Real(0));
+    bed_.take_velocity(grid);
+    grid.clear();
+  }
+  p2g(particles, materials, bins_, grid, dt);
+  if (!bed_.empty()) p2g(bed_.particles, materials, bed_.bins, grid, dt);
+}
+
+// The grid velocity of the transfer alone, v_i^n (p2g without forces, folded and unfolded as the step's), and
+// each FLIP particle's velocity that it does not hold, u_p (transfer/flip.h); the grid is then cleared for p2g.
+template <int dim>
+void Simulation<dim>::flip_transfer() {
+  p2g_phase(Real(0));
+  boundary_fold();
+  grid.for_each_node([&](size_t k, const IVec<dim>&) {
+    if (grid.mass[k] > 0) grid.momentum[k] /= grid.mass[k];
+  });
+  boundary_unfold();
+  flip_residual(particles, materials, grid, bins_, flip_u_);
+  grid.clear();
 }
 
 // Every reorder_interval steps the particle arrays are reordered by block (memory locality); then the bins of

@@ -95,6 +95,8 @@ class Simulation {
   void advance(Real dt, double t_end);
   // The phases (sim/phases.h).
   void bin();
+  void p2g_phase(Real dt);
+  void flip_transfer();
   void boundary_fold();
   void grid_update_phase(Real dt);
   void boundary_unfold();
@@ -113,6 +115,9 @@ class Simulation {
   ParticleBins bins_;
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
+  bool any_flip_ = false, any_j_bar_ = false;  // some material has a FLIP share, J-bar (material/water.h)
+  std::vector<Vec<dim>> flip_u_;   // per particle: its velocity the grid did not see (transfer/flip.h)
+  std::vector<Real> J_state_;      // the particles' own J while p2g takes the stress at the cell means (material/j_bar.h)
   PhaseTimer timer_;
 #ifdef CDMPM_MPI
   std::unique_ptr<Domain<dim>> domain_;

@@ -17,9 +17,11 @@
 
 namespace cdmpm {
 
-template <int dim>
-void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins) {
-  const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
+// Visits every particle q, block by block, with the grid velocity at it and the matrix of APIC's C,
+//   f(q, v, B),   v = sum_i w_ip v_i,   B = sum_i w_ip v_i (x_i - x_p)^T / dx,
+// the nodes' velocities v_i being in g.momentum (after grid_update). Also used by transfer/flip.h.
+template <int dim, class F>
+void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, F&& f) {
   const size_t nb = bins.bin_count();
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t j = 0; j < nb; ++j) {
@@ -34,10 +36,18 @@ void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins) {
       Mat<dim> B;  // sum_i w_i v_i o_i^T; the node's offset from the particle is o_i - fx
       gather_from_patch<dim>(pv, s, patch.base_index(s), v, B);
       B -= v * s.fx.transpose();
-      p.v[q] = v;
-      p.C[q] = Dinv_dx * B;
+      f(q, v, B);
     }
   }
+}
+
+template <int dim>
+void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins) {
+  const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
+  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>& B) {
+    p.v[q] = v;
+    p.C[q] = Dinv_dx * B;
+  });
 }
 
 }  // namespace cdmpm
