@@ -21,7 +21,7 @@
 // damaged band apart. It acts in every damaged particle below z_w (optionally only within `region` along x).
 // Scene keys (docs/ice.md, docs/scenes.md): density, youngs_modulus, poissons_ratio (0.3); M or
 // friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true);
-// hydrofracture {water_level, water_density (1025), region} (off).
+// hydrofracture {water_level, water_density (1025), region} (off); flip (0: the FLIP share, transfer/flip.h).
 #pragma once
 
 #include <algorithm>
