@@ -37,7 +37,8 @@ struct Material {
   }
   std::string_view type() const { return visit([](const auto& m) { return std::decay_t<decltype(m)>::type; }); }
   Real density() const { return visit([](const auto& m) { return m.density(); }); }
-  // The water's options against the one-field drag (material/water.h); other models have neither.
+  // The options against the one-field drag (docs/water.md, "Buoyancy: J-bar and FLIP"): j_bar of water and
+  // rigid materials, flip of water, rigid and ice; false and 0 for a model without the key.
   bool j_bar() const {
     return visit([](const auto& m) { if constexpr (requires { m.j_bar; }) return m.j_bar; else return false; });
   }

@@ -223,9 +223,7 @@ template <int dim>
 void Simulation<dim>::flip_transfer() {
   p2g_phase(Real(0));
   boundary_fold();
-  grid.for_each_node([&](size_t k, const IVec<dim>&) {
-    if (grid.mass[k] > 0) grid.momentum[k] /= grid.mass[k];
-  });
+  grid_update<dim>(grid, Vec<dim>::Zero(), Real(0), {});  // v = mv / m: no force, no boundary condition
   boundary_unfold();
   flip_residual(particles, materials, grid, bins_, flip_u_);
   grid.clear();

@@ -11,7 +11,8 @@
 // with a = the material's `flip` and v_i^n the grid velocity of the transfer alone (p2g with dt = 0, the
 // boundaries' fold and unfold, no force). u_p is what the grid did not see of the particle's velocity; it is taken
 // before g2p (flip_residual) and added after it (flip_blend). C_p stays APIC's. a = 0 is APIC unchanged.
-// Momentum: sum_p m_p u_p is the p2g transfer's loss, which APIC discards and FLIP keeps.
+// Momentum: p2g conserves it, so sum_p m_p u_p = sum_p m_p v_p - sum_i m_i v_i^n = 0 (up to the boundaries'
+// fold and unfold): the FLIP share adds no momentum, it keeps on the particles what the grid smoothed away.
 #pragma once
 
 #include <vector>
