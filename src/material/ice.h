@@ -21,7 +21,8 @@
 // damaged band apart. It acts in every damaged particle below z_w (optionally only within `region` along x).
 // Scene keys (docs/ice.md, docs/scenes.md): density, youngs_modulus, poissons_ratio (0.3); M or
 // friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true);
-// hydrofracture {water_level, water_density (1025), region} (off); flip (0: the FLIP share, transfer/flip.h).
+// hydrofracture {water_level, water_density (1025), region} (off); flip (0: the FLIP share) and xpic (off:
+// its XPIC order), transfer/flip.h.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +31,7 @@
 #include <numbers>
 
 #include "material/cohesive_cam_clay.h"
+#include "material/flip_share.h"
 #include "material/material_model.h"
 #include "material/neo_hookean_split.h"
 
@@ -63,7 +65,7 @@ struct Ice {
   Real p0_initial = 0;      // pre-consolidation pressure of intact ice [Pa]
   Real alpha_initial = 0;   // alpha giving p0_initial
   PoroDamage hydrofracture;  // water pressure in damaged ice (off unless the scene sets "hydrofracture")
-  Real flip = 0;             // the FLIP share of the velocity update (transfer/flip.h)
+  FlipShare flip;            // the FLIP share of the velocity update and its XPIC order (transfer/flip.h)
 
   static Ice parse(const SceneReader& r, const Node& n);
 
@@ -128,9 +130,9 @@ struct Ice {
 // Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
 inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
-               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture", "flip"});
+               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture", "flip", "xpic"});
   Ice ice;
-  ice.flip = static_cast<Real>(r.number(m, "flip", {0, 1}, 0.0));
+  ice.flip = read_flip_share(r, m);
   // Bounds of real materials, which keep the time step and the state representable.
   ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), {1, 1e5}, " kg/m^3"));
   const double E = r.number(r.required(m, "youngs_modulus"), {0, 1e12, true, false}, " Pa");

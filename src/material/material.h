@@ -43,7 +43,11 @@ struct Material {
     return visit([](const auto& m) { if constexpr (requires { m.j_bar; }) return m.j_bar; else return false; });
   }
   Real flip() const {
-    return visit([](const auto& m) -> Real { if constexpr (requires { m.flip; }) return m.flip; else return Real(0); });
+    return visit([](const auto& m) -> Real { if constexpr (requires { m.flip; }) return m.flip.a; else return Real(0); });
+  }
+  // The XPIC order of the FLIP share (transfer/flip.h); 0: plain FLIP, or no FLIP share.
+  int xpic() const {
+    return visit([](const auto& m) -> int { if constexpr (requires { m.flip; }) return m.flip.xpic; else return 0; });
   }
 };
 

@@ -8,9 +8,11 @@
 // projection cancels, so it acts only on the water. Stored with the fluids (no F or alpha).
 // With `flip` (transfer/flip.h) the particles' velocities before the projection keep that share of FLIP, so the
 // body's momentum follows the grid's change of velocity instead of its smoothed velocity.
-// Scene keys: density, bulk_modulus (both required), gamma (7), flip (0, in [0, 1]) - docs/scenes.md.
+// Scene keys: density, bulk_modulus (both required), gamma (7), flip (0, in [0, 1]), xpic (off; 1-8, with flip),
+// j_bar (false) - docs/scenes.md.
 #pragma once
 
+#include "material/flip_share.h"
 #include "material/tait_state.h"
 
 namespace cdmpm {
@@ -20,14 +22,14 @@ struct Rigid : TaitState {
   static constexpr MaterialTraits traits{.rigid = true};
 
   static Rigid parse(const SceneReader& r, const Node& n) {
-    r.object(n, {"type", "density", "bulk_modulus", "gamma", "flip", "j_bar"});
+    r.object(n, {"type", "density", "bulk_modulus", "gamma", "flip", "xpic", "j_bar"});
     Rigid b;
     b.eos = read_eos(r, n);
-    b.flip = static_cast<Real>(r.number(n, "flip", {0, 1}, 0.0));
+    b.flip = read_flip_share(r, n);
     b.j_bar = r.boolean(n, "j_bar", false);
     return b;
   }
-  Real flip = 0;  // the FLIP share of the particles' velocity update (transfer/flip.h)
+  FlipShare flip;  // the FLIP share of the particles' velocity update and its XPIC order (transfer/flip.h)
   bool j_bar = false;  // its pressure from the cell-mean J (material/j_bar.h)
   Real stable_dt(Real, int) const { return no_time_step_limit; }
   template <int dim>

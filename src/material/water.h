@@ -9,9 +9,10 @@
 // "Buoyancy: J-bar and FLIP"): `j_bar`, the stress from the mean J of the particles of this material around the
 // same grid node (material/j_bar.h), and `flip`, the share of FLIP in the velocity update (transfer/flip.h).
 // Scene keys: density, bulk_modulus (both required), gamma (7), viscosity (0, at most 1e6 Pa s), j_bar (false),
-// flip (0, in [0, 1]) - docs/scenes.md.
+// flip (0, in [0, 1]), xpic (off; 1-8, with flip) - docs/scenes.md.
 #pragma once
 
+#include "material/flip_share.h"
 #include "material/tait_state.h"
 
 namespace cdmpm {
@@ -21,16 +22,16 @@ struct Water : TaitState {
   static constexpr MaterialTraits traits{.fluid = true};
 
   static Water parse(const SceneReader& r, const Node& n) {
-    r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity", "j_bar", "flip"});
+    r.object(n, {"type", "density", "bulk_modulus", "gamma", "viscosity", "j_bar", "flip", "xpic"});
     Water w;
     w.eos = read_eos(r, n);
     w.eos.mu = static_cast<Real>(r.number(n, "viscosity", {0, 1e6}, 0.0));
     w.j_bar = r.boolean(n, "j_bar", false);
-    w.flip = static_cast<Real>(r.number(n, "flip", {0, 1}, 0.0));
+    w.flip = read_flip_share(r, n);
     return w;
   }
   bool j_bar = false;  // the stress from the cell-mean J (material/j_bar.h)
-  Real flip = 0;       // the FLIP share of the velocity update (transfer/flip.h)
+  FlipShare flip;      // the FLIP share of the velocity update and its XPIC order (transfer/flip.h)
   Real stable_dt(Real dx, int dim) const {
     return eos.mu > 0 ? dx * dx * eos.rho0 / (Real(2 * dim) * eos.mu) : no_time_step_limit;
   }

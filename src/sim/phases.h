@@ -4,6 +4,7 @@
 //   bin               sort particles by grid block, activate the blocks they touch   grid/particle_bins.h
 //   flip_transfer     [materials with a FLIP share] the transfer's grid velocity v^n  transfer/flip.h
 //                     without forces, and each particle's velocity it does not hold
+//                     [materials with xpic: that velocity filtered by XPIC's PIC transfers]
 //   p2g               mass, momentum and stress impulse to the grid                    transfer/p2g.h
 //                     [fluids with j_bar: the stress at the cell-mean J]               material/j_bar.h
 //                     [distributed: halo sum, other ranks' patches added in colour order, parallel/halo_exchange.h]

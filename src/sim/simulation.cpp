@@ -50,7 +50,10 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
 #endif
   crack_starts.configure(materials, static_cast<Real>(s.output.damage_threshold), grid.dx);
   material_dt_ = material_time_step_limit(materials, grid.dx, dim);
-  for (const Material& m : materials) any_flip_ |= m.flip() > 0, any_j_bar_ |= m.j_bar();
+  for (const Material& m : materials) {
+    any_flip_ |= m.flip() > 0, any_j_bar_ |= m.j_bar();
+    xpic_order_ = std::max(xpic_order_, m.xpic());
+  }
   for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
@@ -218,15 +221,29 @@ void Simulation<dim>::p2g_phase(Real dt) {
 }
 
 // The grid velocity of the transfer alone, v_i^n (p2g without forces, folded and unfolded as the step's), and
-// each FLIP particle's velocity that it does not hold, u_p (transfer/flip.h); the grid is then cleared for p2g.
+// each FLIP particle's velocity that it does not hold, u_p, filtered by XPIC where a material asks for it
+// (transfer/flip.h); the grid is then cleared for p2g.
 template <int dim>
 void Simulation<dim>::flip_transfer() {
+  transfer_velocity();
+  flip_residual(particles, materials, grid, bins_, flip_u_);
+  if (xpic_order_ > 0) {
+    xpic_filter(particles, materials, grid, bins_, xpic_order_, [&] {
+      grid.clear();
+      transfer_velocity();
+    }, xpic_, flip_u_);
+  }
+  grid.clear();
+}
+
+// The particles' velocities to the grid without force: p2g with dt = 0, the boundaries' fold, v = mv / m (no
+// boundary condition), their unfold.
+template <int dim>
+void Simulation<dim>::transfer_velocity() {
   p2g_phase(Real(0));
   boundary_fold();
-  grid_update<dim>(grid, Vec<dim>::Zero(), Real(0), {});  // v = mv / m: no force, no boundary condition
+  grid_update<dim>(grid, Vec<dim>::Zero(), Real(0), {});
   boundary_unfold();
-  flip_residual(particles, materials, grid, bins_, flip_u_);
-  grid.clear();
 }
 
 // Every reorder_interval steps the particle arrays are reordered by block (memory locality); then the bins of

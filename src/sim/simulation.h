@@ -33,6 +33,7 @@
 #include "sim/bed_layer.h"
 #include "sim/phases.h"
 #include "sim/rigid_bodies.h"
+#include "transfer/flip.h"
 #ifdef CDMPM_MPI
 #include "parallel/domain.h"
 #endif
@@ -97,6 +98,7 @@ class Simulation {
   void bin();
   void p2g_phase(Real dt);
   void flip_transfer();
+  void transfer_velocity();
   void boundary_fold();
   void grid_update_phase(Real dt);
   void boundary_unfold();
@@ -117,6 +119,8 @@ class Simulation {
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   bool any_flip_ = false, any_j_bar_ = false;  // some material has a FLIP share, J-bar (material/water.h)
   std::vector<Vec<dim>> flip_u_;   // per particle: its velocity the grid did not see (transfer/flip.h)
+  int xpic_order_ = 0;             // the largest XPIC order of the materials (transfer/flip.h)
+  XpicScratch<dim> xpic_;          // the XPIC recurrence's work arrays (transfer/flip.h)
   std::vector<Real> J_state_;      // the particles' own J while p2g takes the stress at the cell means (material/j_bar.h)
   PhaseTimer timer_;
 #ifdef CDMPM_MPI
