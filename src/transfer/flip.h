@@ -25,10 +25,11 @@
 // the particle's velocity V_p of FLIP replaced by S v*. v^n stays the transfer of p2g (APIC's, with C_p), so
 // u_p keeps cancelling p2g's own transfer; the recurrence is PIC's (no C_p), as in the paper. (Starting it from
 // APIC's v^n instead is unstable: APIC's round trip keeps a grid-scale mode that S+ S nearly removes, so the
-// series amplifies it, by 1.98 per step at m = 2.) m = 1 is PIC's velocity with APIC's affine C_p; as m grows
-// u_p tends to FLIP's without its null-space part. Each order costs a PIC p2g and a g2p of all particles (the
-// filter acts on the one velocity field); the terms are added to u_p per material, up to its own order
-// (xpic_accumulate). Simulation::xpic_filter runs the recurrence.
+// series amplifies it, by 1 + A per step at m = 2, A = 1 - (S+ S's symbol) up to 0.98 for the grid-scale modes
+// in 2D.) m = 1 is PIC's velocity with APIC's affine C_p; as m grows u_p tends to FLIP's without its null-space
+// part. Each order costs a PIC p2g and a g2p of all particles (the filter acts on the one velocity field); the
+// terms are added to u_p per material, up to its own order (xpic_accumulate). xpic_filter below runs the
+// recurrence, from Simulation::flip_transfer.
 #pragma once
 
 #include <vector>
