@@ -76,35 +76,33 @@ void xpic_accumulate(const Particles<dim>& p, const std::vector<Material>& mater
 // Work arrays of the XPIC recurrence, kept between steps.
 template <int dim>
 struct XpicScratch {
-  std::vector<Vec<dim>> D, z;  // D_k per node; the velocities z the particles carry through S+
+  std::vector<Vec<dim>> D, z;  // D_k per node; S D_k per particle, the velocities the particles carry through S+
   std::vector<Mat<dim>> zero_C;  // no affine part in S+
 };
 
 // The XPIC recurrence up to `order`: D_1 = S+ V, D_k = D_{k-1} - S+ S D_{k-1}, each S D_k added to u_p of the
 // materials of order k or more (u_p holding -sum_i w_ip v_i^n for them, flip_residual). transfer() must leave
-// S+ of the particles' present v (C = 0 here) in g.momentum: a transfer-only p2g into the cleared grid, the
-// boundaries' fold, v = mv / m, their unfold. The particles' v and C are swapped out for it and back.
+// S+ of the particles' present v in g.momentum: a transfer-only p2g into the cleared grid, the boundaries' fold,
+// v = mv / m, their unfold. The particles' C is swapped out for zeros throughout, their v for S D_k in turn.
 template <int dim, class Transfer>
 void xpic_filter(Particles<dim>& p, const std::vector<Material>& materials, Grid<dim>& g, const ParticleBins& bins,
                  int order, Transfer&& transfer, XpicScratch<dim>& s, std::vector<Vec<dim>>& u) {
-  s.z = p.v;
   if (s.zero_C.size() != p.size()) s.zero_C.assign(p.size(), Mat<dim>::Zero());
-  for (int k = 1; k <= order; ++k) {
-    std::swap(p.v, s.z);
-    std::swap(p.C, s.zero_C);
-    transfer();  // g.momentum: S+ z
-    std::swap(p.v, s.z);
-    std::swap(p.C, s.zero_C);
-    if (k == 1) {
-      s.D = g.momentum;  // D_1
-    } else {
-      const size_t nodes = s.D.size();
-#pragma omp parallel for schedule(static)
-      for (size_t i = 0; i < nodes; ++i) g.momentum[i] = s.D[i] -= g.momentum[i];  // D_k
-    }
+  std::swap(p.C, s.zero_C);
+  transfer();  // S+ V
+  s.D = g.momentum;  // D_1
+  for (int k = 1;; ++k) {
     interpolate_velocity(p, g, bins, s.z);  // S D_k
     xpic_accumulate(p, materials, k, s.z, u);
+    if (k == order) break;
+    std::swap(p.v, s.z);
+    transfer();  // g.momentum: S+ S D_k
+    std::swap(p.v, s.z);
+    const size_t nodes = s.D.size();
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < nodes; ++i) g.momentum[i] = s.D[i] -= g.momentum[i];  // D_{k+1}
   }
+  std::swap(p.C, s.zero_C);
 }
 
 // After g2p: v_p += a u_p.
