@@ -45,6 +45,10 @@ struct Material {
   Real flip() const {
     return visit([](const auto& m) -> Real { if constexpr (requires { m.flip; }) return m.flip.a; else return Real(0); });
   }
+  // A rigid body in a field of its own, in frictionless contact with the others (sim/rigid_contact.h).
+  bool contact() const {
+    return visit([](const auto& m) { if constexpr (requires { m.contact; }) return m.contact; else return false; });
+  }
   // The XPIC order of the FLIP share (transfer/flip.h); 0: plain FLIP, or no FLIP share.
   int xpic() const {
     return visit([](const auto& m) -> int { if constexpr (requires { m.flip; }) return m.flip.xpic; else return 0; });

@@ -3,15 +3,18 @@
 // Each rigid body is the set of particles of one rigid material (scene material type "rigid"; the loader lets a
 // rigid material make only one body). Its particles carry mass, momentum and a penalty pressure (below) to the
 // grid like any other particle, so the body and the water share the velocity of every node they both touch
-// (no slip). After each grid-to-particle transfer, project() replaces their velocities by the rigid motion that
-// has the same linear and angular momentum:
+// (no slip). With the rigid key `contact` they scatter instead into the bodies' own grid field, which meets the
+// other materials' field in a frictionless contact (contact(), sim/rigid_contact.h: normal velocities exchanged
+// where the body approaches the water, tangential ones free), and read their velocities back from it. After
+// the grid-to-particle transfer, project() replaces their velocities by the rigid motion that has the same
+// linear and angular momentum:
 //   v_p = V + omega x (x_p - x_c),   C_p = [omega]_x (the skew matrix of omega, the rigid velocity gradient),
 //   V = P / M,  P = sum_p m_p v_p,  M = sum_p m_p,  x_c = sum_p m_p x_p / M,
 //   omega = I^-1 L,  L = sum_p [ m_p r_p x v_p + m_p D axial(C_p - C_p^T) ],  r_p = x_p - x_c,
 //   I = sum_p m_p [ (|r_p|^2 + 2 D) 1 - r_p r_p^T ]   (2D: I and L are scalars, I = sum_p m_p (|r_p|^2 + 2 D)).
 // The terms with D = dx^2/4 (the APIC inertia tensor of quadratic B-splines, Jiang et al. 2015, sec. 5.3) are
 // the angular momentum and inertia that a particle's affine velocity C_p carries to the grid: with them the
-// projection keeps exactly the angular momentum that p2g/g2p exchange with the water.
+// projection keeps exactly the angular momentum that p2g/g2p exchange through the grid.
 // A hinged body turns about its fixed pivot o only: v_p = omega x (x_p - o), omega = I_o^-1 L_o with L and I
 // taken about o (the pivot's reaction changes the linear momentum, not the angular momentum about o).
 // A held body (time < hold_until) is at rest: v_p = 0, C_p = 0.
@@ -19,15 +22,15 @@
 // it from a(t) to a(t + dt) over the step, whatever the forces: omega = (a(t + dt) - a(t)) / dt about the axis
 // normal to the x-z plane (2D: counter-clockwise; 3D: -y, since the tilt turns +x towards +z). It is a wave maker
 // of given motion, the same in 2D and 3D (scenes/eqip_sermia_3d.json).
-// Before its C_p is replaced, each particle's volume ratio follows the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
+// Before its C_p is replaced, each particle of a body in the shared field has its volume ratio follow the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
 // so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
 // pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
 // (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
 // expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside
 // it, tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are
 // slow at coarse resolution. A pressure taken instead from the water around the body, continuous across its
-// surface, fed back on the water it compressed and made a surfacing body unstable; a frictionless two-field
-// contact, commit 2d18ec7, let the water creep half a cell into the body, which then floated 8 % too deep.)
+// surface, fed back on the water it compressed and made a surfacing body unstable. The contact removes the drag
+// but lets the water creep about half a cell into the body, which then floats too deep: docs/validation.md.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity
@@ -39,6 +42,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -46,6 +51,7 @@
 #include "material/material.h"
 #include "parallel/reduction.h"
 #include "scene/scene.h"
+#include "sim/rigid_contact.h"
 
 namespace cdmpm {
 
@@ -57,6 +63,7 @@ struct RigidBody {
   int material = -1;         // the body is the particles of this material
   double hold_until = 0;     // at rest until this time [s]
   bool hinged = false;
+  bool contact = false;      // in a field of its own, in frictionless contact with the others (rigid key `contact`)
   Vec<dim> pivot = Vec<dim>::Zero();
   // State.
   double mass = 0;
@@ -144,6 +151,8 @@ template <int dim>
 class RigidBodies {
  public:
   using A = RigidAlgebra<dim>;
+  using Spin = typename RigidBody<dim>::Spin;
+  static constexpr int rot_dofs = RigidBody<dim>::rot;
   std::vector<RigidBody<dim>> bodies;
 
   // One body per rigid body in the scene, with its initial state measured from the seeded particles; its
@@ -160,6 +169,7 @@ class RigidBodies {
       body.hold_until = b.hold_until;
       body.motion = b.motion;
       body.hinged = !b.hinge.empty();
+      body.contact = materials[b.material_index].contact();
       for (int a = 0; a < dim && body.hinged; ++a) body.pivot[a] = static_cast<Real>(b.hinge[a]);
       body.rotation = A::tilt(b.tilt);
       body.angle = b.tilt * std::numbers::pi / 180;
@@ -242,10 +252,71 @@ class RigidBodies {
       const int b = body_of[p.material[q]];
       if (b < 0) continue;
       const RigidBody<dim>& B = bodies[b];
-      p.J[q] = std::min(Real(1), p.J[q] * (Real(1) + dt * p.C[q].trace()));
+      if (!B.contact) p.J[q] = std::min(Real(1), p.J[q] * (Real(1) + dt * p.C[q].trace()));
       p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
       p.C[q] = A::skew(B.omega);
     }
+  }
+
+  // Whether some body is in contact (rigid key `contact`) rather than in the shared field.
+  bool any_contact() const {
+    return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody<dim>& B) { return B.contact; });
+  }
+
+  // After the grid update of the other materials at time `time`: the bodies' frictionless contact with them
+  // (sim/rigid_contact.h), from each body's mass, centre, inertia (summed over its particles in the one-process
+  // order, in double, as in project()) and motion at the start of the step; sets the field that project() then
+  // reads through contact.gather(). `owned`: a distributed run's own grid nodes; `keys` as for project().
+  void contact(RigidContact<dim>& contact, const Particles<dim>& p, Grid<dim>& g, const Vec<dim>& gravity, Real dt,
+               double time, const std::vector<std::unique_ptr<Boundary<dim>>>& bcs,
+               const std::function<bool(size_t)>& owned, const std::vector<uint64_t>* keys = nullptr) {
+    if (bodies.empty()) return;
+    using C = RigidContact<dim>;
+    const Real D = g.dx * g.dx / 4;
+    const size_t nb = bodies.size();
+    const std::vector<Sample> s = samples_in_order(p, keys);
+    std::vector<typename C::Input> in;
+    in.reserve(s.size());
+    std::vector<double> mass(nb, 0.0);
+    std::vector<Eigen::Matrix<double, dim, 1>> first(nb, Eigen::Matrix<double, dim, 1>::Zero());
+    for (const Sample& q : s) {
+      if (!bodies[q.body].contact) continue;
+      in.push_back({q.body, q.mass, q.x});
+      mass[q.body] += q.mass;
+      first[q.body] += q.mass * q.x.template cast<double>();
+    }
+    // A body in the shared field has no contact nodes; a held or driven one moves as given (s = s*).
+    std::vector<typename C::Body> state(nb);
+    for (size_t b = 0; b < nb; ++b) {
+      const RigidBody<dim>& B = bodies[b];
+      typename C::Body& S = state[b];
+      S.mass = mass[b];
+      S.centre = B.contact ? Vec<dim>((first[b] / mass[b]).template cast<Real>()) : B.centre;
+      S.hinged = B.hinged;
+      S.fixed = !B.contact || time < B.hold_until || !B.motion.empty();
+      S.origin = B.hinged ? B.pivot : S.centre;
+      S.inertia.setZero();
+    }
+    for (const Sample& q : s)
+      if (bodies[q.body].contact) state[q.body].inertia += A::inertia(q.mass, q.x - state[q.body].origin, D).template cast<double>();
+    for (size_t b = 0; b < nb; ++b) {
+      const RigidBody<dim>& B = bodies[b];
+      typename C::Body& S = state[b];
+      if (!B.contact || time < B.hold_until) continue;  // s* = 0
+      S.s_star.template tail<rot_dofs>() = B.omega.template cast<double>();
+      if (!B.motion.empty()) {  // driven: the tilt rate over this step, as project() sets it
+        const double rate = (B.prescribed_tilt(time + dt) - B.prescribed_tilt(time)) / dt;
+        if constexpr (dim == 2) S.s_star[dim] = rate;
+        else S.s_star[dim + 1] = -rate;
+      } else if (B.hinged) {  // gravity's torque about the hinge
+        const Spin torque = A::cross(S.centre - B.pivot, static_cast<Real>(S.mass) * gravity);
+        S.s_star.template tail<rot_dofs>() += static_cast<double>(dt) * S.inertia.ldlt().solve(torque.template cast<double>());
+      } else {
+        S.s_star.template head<dim>() = (B.velocity + dt * gravity).template cast<double>();
+      }
+    }
+    contact.scatter(in, g);
+    contact.solve(state, g, bcs, owned);
   }
 
   // Moves the rigid particles and the bodies' state rigidly over dt with the velocities set by project(), and

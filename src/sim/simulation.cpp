@@ -54,7 +54,10 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
     any_flip_ |= m.flip() > 0, any_j_bar_ |= m.j_bar();
     xpic_order_ = std::max(xpic_order_, m.xpic());
   }
-  for (const Material& m : materials) rigid_material_.push_back(m.traits().rigid);
+  for (const Material& m : materials) {
+    rigid_material_.push_back(m.traits().rigid);
+    contact_material_.push_back(m.contact());
+  }
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
   if (settle && s.time.settle > 0) settle_elastically(s.time.settle, static_cast<Real>(s.time.settle_damping));
@@ -286,6 +289,17 @@ void Simulation<dim>::grid_update_phase(Real dt) {
     b->prepare(*this, dt);
   }
   grid_update(grid, gravity, dt, boundaries);
+  if (!rigid.any_contact()) return;
+  // The rigid bodies' contact with the other materials (sim/rigid_contact.h); a distributed run sums its own nodes.
+  std::function<bool(size_t)> owned = [](size_t) { return true; };
+  const std::vector<uint64_t>* keys = nullptr;
+#ifdef CDMPM_MPI
+  if (domain_) {
+    keys = &domain_->keys();
+    owned = [this](size_t k) { return domain_->partition().owner(grid.block_index(grid.block_of(grid.node(k)))) == mpi::rank(); };
+  }
+#endif
+  rigid.contact(contact_, particles, grid, gravity, dt, time_, boundaries, owned, keys);
 }
 
 // Unfold in the reverse order of folding (the adjoint), so a ghost that is folded twice, e.g. at the corner
@@ -298,8 +312,11 @@ void Simulation<dim>::boundary_unfold() {
 #endif
 }
 
+// The particles of bodies in contact read their bodies' field (sim/rigid_contact.h; g2p gave them the other
+// materials'), then every rigid particle takes its body's rigid motion.
 template <int dim>
 void Simulation<dim>::rigid_projection(Real dt) {
+  if (rigid.any_contact()) contact_.gather(particles, grid, contact_material_);
 #ifdef CDMPM_MPI
   if (domain_) return rigid.project(particles, time_, dt, grid.dx, &domain_->keys());
 #endif

@@ -114,7 +114,9 @@ class Simulation {
   long long steps_ = 0;
   Real material_dt_ = 0;                 // smallest of the materials' own time-step limits
   std::vector<uint8_t> rigid_material_;  // per material: its particles are moved by a rigid body
+  std::vector<uint8_t> contact_material_;  // per material: a rigid body in contact, in its own field
   ParticleBins bins_;
+  RigidContact<dim> contact_;      // the rigid bodies' grid field and its contact with the others (sim/rigid_contact.h)
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   bool any_flip_ = false, any_j_bar_ = false;  // some material has a FLIP share, J-bar (material/water.h)

@@ -9,6 +9,9 @@
 // in its moving-least-squares form. With dt = 0 this is the pure APIC transfer, which conserves mass,
 // linear and angular momentum exactly.
 //
+// The particles of a rigid body in contact (rigid key `contact`) are left out: they scatter into their body's
+// own field (sim/rigid_contact.h).
+//
 // Race-free and deterministic: blocks of one colour run in parallel, colours in sequence (particle_bins.h).
 // Each block's particles scatter into a dense patch that is then added to the sparse grid (block_patch.h).
 #pragma once
@@ -31,8 +34,11 @@ void scatter_bin(const Particles<dim>& p, const std::vector<Material>& materials
                  const Grid<dim>& g, uint32_t j, Real dt, PatchAccumulator<dim>& acc) {
   const Real Dinv = Real(4) * g.inv_dx * g.inv_dx;
   const BlockPatch<dim> patch(g, bins.blocks[j]);
+  std::array<uint8_t, 256> own_field{};  // per material id (uint8_t): a rigid body in contact, in its own field
+  for (size_t mi = 0; mi < materials.size() && mi < own_field.size(); ++mi) own_field[mi] = materials[mi].contact();
   for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
     const uint32_t q = bins.order[k];
+    if (own_field[p.material[q]]) continue;
     const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
     const Real m = p.mass[q];
     Mat<dim> affine = m * p.C[q];
