@@ -131,6 +131,20 @@ class Boundary {
   Real tol_;  // node_tolerance(dx)
 };
 
+// Whether the solid of any of the boundaries holds point x (Boundary::is_solid).
+template <int dim>
+bool any_solid(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec<dim>& x) {
+  for (const auto& b : bcs)
+    if (b->is_solid(x)) return true;
+  return false;
+}
+
+// Every boundary's condition on the velocity v of the grid node at x, in the scene's order (Boundary::apply).
+template <int dim>
+void apply_conditions(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec<dim>& x, Vec<dim>& v) {
+  for (const auto& b : bcs) b->apply(x, v);
+}
+
 // Defines the registry's factory NAME<dim> (2D and 3D) building a CLASS<dim> from its scene object; each boundary
 // file ends with one (boundary/registry.cpp lists them).
 #define CDMPM_BOUNDARY_FACTORY(NAME, CLASS)                                                                    \

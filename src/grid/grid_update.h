@@ -19,10 +19,7 @@ void grid_update(Grid<dim>& g, const Vec<dim>& gravity, Real dt, const std::vect
     const Real m = g.mass[k];
     if (m <= 0) return;
     Vec<dim> v = g.momentum[k] / m + dt * gravity;
-    if (!bcs.empty()) {
-      const Vec<dim> x = g.position(i);
-      for (const auto& b : bcs) b->apply(x, v);
-    }
+    if (!bcs.empty()) apply_conditions(bcs, g.position(i), v);
     g.momentum[k] = v;
   });
 }

@@ -22,9 +22,7 @@ double bed_height(const std::vector<std::unique_ptr<Boundary<dim>>>& boundaries,
   for (int a = 0; a < dim - 1; ++a) x[a] = static_cast<Real>(horizontal[a]);
   auto solid = [&](double z) {
     x[up] = static_cast<Real>(z);
-    for (const auto& b : boundaries)
-      if (b->is_solid(x)) return true;
-    return false;
+    return any_solid(boundaries, x);
   };
   const double top = domain_size[up], eps = 1e-9 * top;
   if (!solid(eps)) return 0;

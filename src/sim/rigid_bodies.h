@@ -22,8 +22,8 @@
 // it from a(t) to a(t + dt) over the step, whatever the forces: omega = (a(t + dt) - a(t)) / dt about the axis
 // normal to the x-z plane (2D: counter-clockwise; 3D: -y, since the tilt turns +x towards +z). It is a wave maker
 // of given motion, the same in 2D and 3D (scenes/eqip_sermia_3d.json).
-// Before its C_p is replaced, each particle of a body in the shared field has its volume ratio follow the grid: J_p <- min(1, J_p (1 + dt tr C_p)),
-// so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
+// Before its C_p is replaced, each particle of a body in the shared field has its volume ratio follow the grid:
+// J_p <- min(1, J_p (1 + dt tr C_p)), so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
 // pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
 // (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
 // expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside
@@ -191,38 +191,22 @@ class RigidBodies {
     const std::vector<int>& body_of = body_of_;
     // The rigid particles in the one-process array order, the order of the sums below (bodies_in_order).
     const std::vector<Sample> s = samples_in_order(p, keys);
-    // Pass 1: mass, centre of mass and momentum (serial: sums independent of the thread count). The sums over
-    // a body's particles are accumulated in double, so that a single-precision build keeps the body's momentum
-    // to its own round-off rather than to that of a float sum over thousands of particles.
-    using DVec = Eigen::Matrix<double, dim, 1>;
-    using DSpin = Eigen::Matrix<double, RigidBody<dim>::rot, 1>;
-    using DInertia = Eigen::Matrix<double, RigidBody<dim>::rot, RigidBody<dim>::rot>;
-    std::vector<double> mass(nb, 0.0);
-    std::vector<DVec> first(nb, DVec::Zero()), momentum(nb, DVec::Zero());
-    for (const Sample& q : s) {
-      const int b = q.body;
-      const double m = q.mass;
-      mass[b] += m;
-      first[b] += m * q.x.template cast<double>();
-      momentum[b] += m * q.v.template cast<double>();
-    }
-    std::vector<Vec<dim>> origin(nb);
-    for (size_t b = 0; b < nb; ++b) {
-      bodies[b].mass = mass[b];
-      bodies[b].centre = (first[b] / mass[b]).template cast<Real>();
-      origin[b] = bodies[b].hinged ? bodies[b].pivot : bodies[b].centre;
-    }
-    // Pass 2: angular momentum and inertia about the body's origin (centre of mass or pivot).
+    // Pass 1: mass, centre of mass and inertia about the origin (centre of mass or pivot); momentum.
+    // Pass 2: angular momentum about the origin. Serial, so the sums do not depend on the thread count.
+    const MassProperties mp = mass_properties(s, D);
+    std::vector<DVec> momentum(nb, DVec::Zero());
+    for (const Sample& q : s) momentum[q.body] += static_cast<double>(q.mass) * q.v.template cast<double>();
     std::vector<DSpin> L(nb, DSpin::Zero());
-    std::vector<DInertia> I(nb, DInertia::Zero());
     for (const Sample& q : s) {
-      const int b = q.body;
-      const Vec<dim> r = q.x - origin[b];
-      L[b] += (q.mass * (A::cross(r, q.v) + D * A::axial2(q.C))).template cast<double>();
-      I[b] += A::inertia(q.mass, r, D).template cast<double>();
+      const Vec<dim> r = q.x - mp.origin[q.body];
+      L[q.body] += (q.mass * (A::cross(r, q.v) + D * A::axial2(q.C))).template cast<double>();
     }
+    const std::vector<double>& mass = mp.mass;
+    const std::vector<DInertia>& I = mp.inertia;
     for (size_t b = 0; b < nb; ++b) {
       RigidBody<dim>& B = bodies[b];
+      B.mass = mass[b];
+      B.centre = mp.centre[b];
       B.inertia = I[b].template cast<Real>();
       if (time < B.hold_until) {
         B.velocity.setZero();
@@ -270,35 +254,26 @@ class RigidBodies {
   void contact(RigidContact<dim>& contact, const Particles<dim>& p, Grid<dim>& g, const Vec<dim>& gravity, Real dt,
                double time, const std::vector<std::unique_ptr<Boundary<dim>>>& bcs,
                const std::function<bool(size_t)>& owned, const std::vector<uint64_t>* keys = nullptr) {
-    if (bodies.empty()) return;
     using C = RigidContact<dim>;
-    const Real D = g.dx * g.dx / 4;
     const size_t nb = bodies.size();
     const std::vector<Sample> s = samples_in_order(p, keys);
     std::vector<typename C::Input> in;
     in.reserve(s.size());
-    std::vector<double> mass(nb, 0.0);
-    std::vector<Eigen::Matrix<double, dim, 1>> first(nb, Eigen::Matrix<double, dim, 1>::Zero());
-    for (const Sample& q : s) {
-      if (!bodies[q.body].contact) continue;
-      in.push_back({q.body, q.mass, q.x});
-      mass[q.body] += q.mass;
-      first[q.body] += q.mass * q.x.template cast<double>();
-    }
+    for (const Sample& q : s)
+      if (bodies[q.body].contact) in.push_back({q.body, q.mass, q.x});
     // A body in the shared field has no contact nodes; a held or driven one moves as given (s = s*).
+    const MassProperties mp = mass_properties(s, g.dx * g.dx / 4);
     std::vector<typename C::Body> state(nb);
     for (size_t b = 0; b < nb; ++b) {
       const RigidBody<dim>& B = bodies[b];
       typename C::Body& S = state[b];
-      S.mass = mass[b];
-      S.centre = B.contact ? Vec<dim>((first[b] / mass[b]).template cast<Real>()) : B.centre;
+      S.mass = mp.mass[b];
+      S.centre = mp.centre[b];
+      S.origin = mp.origin[b];
+      S.inertia = mp.inertia[b];
       S.hinged = B.hinged;
       S.fixed = !B.contact || time < B.hold_until || !B.motion.empty();
-      S.origin = B.hinged ? B.pivot : S.centre;
-      S.inertia.setZero();
     }
-    for (const Sample& q : s)
-      if (bodies[q.body].contact) state[q.body].inertia += A::inertia(q.mass, q.x - state[q.body].origin, D).template cast<double>();
     for (size_t b = 0; b < nb; ++b) {
       const RigidBody<dim>& B = bodies[b];
       typename C::Body& S = state[b];
@@ -395,6 +370,35 @@ class RigidBodies {
     Vec<dim> x, v;
     Mat<dim> C;
   };
+  using DVec = Eigen::Matrix<double, dim, 1>;
+  using DSpin = Eigen::Matrix<double, rot_dofs, 1>;
+  using DInertia = Eigen::Matrix<double, rot_dofs, rot_dofs>;
+  // Each body's mass M, centre of mass x_c, origin (x_c, or the pivot of a hinged body) and inertia about the
+  // origin with the APIC self-inertia (D = dx^2/4), as in the header. Summed in double in the order of `s`, so that
+  // a single-precision build keeps them to its own round-off rather than to that of a float sum over thousands of
+  // particles, and project() and contact() get the same bits.
+  struct MassProperties {
+    std::vector<double> mass;
+    std::vector<Vec<dim>> centre, origin;
+    std::vector<DInertia> inertia;
+  };
+  MassProperties mass_properties(const std::vector<Sample>& s, Real D) const {
+    const size_t nb = bodies.size();
+    MassProperties mp{std::vector<double>(nb, 0.0), std::vector<Vec<dim>>(nb), std::vector<Vec<dim>>(nb),
+                      std::vector<DInertia>(nb, DInertia::Zero())};
+    std::vector<DVec> first(nb, DVec::Zero());
+    for (const Sample& q : s) {
+      const double m = q.mass;
+      mp.mass[q.body] += m;
+      first[q.body] += m * q.x.template cast<double>();
+    }
+    for (size_t b = 0; b < nb; ++b) {
+      mp.centre[b] = (first[b] / mp.mass[b]).template cast<Real>();
+      mp.origin[b] = bodies[b].hinged ? bodies[b].pivot : mp.centre[b];
+    }
+    for (const Sample& q : s) mp.inertia[q.body] += A::inertia(q.mass, q.x - mp.origin[q.body], D).template cast<double>();
+    return mp;
+  }
   // The rigid particles of every body in the order of the one-process array, on every rank. The sums of project()
   // then add them in that order, the bits of one process on any number of ranks (per-rank partial sums added in
   // rank order would differ in the last bits, and between two sorts a rank's particles are not a contiguous range

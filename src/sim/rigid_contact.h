@@ -170,7 +170,7 @@ class RigidContact {
       if (g.mass[k] <= 0 || !(len > 0)) continue;
       const Real share = std::clamp((mass_[k] / full[b] - ramp_start) / (ramp_end - ramp_start), Real(0), Real(1));
       if (!(share > 0)) continue;
-      if (solid(bcs, x)) continue;
+      if (any_solid(bcs, x)) continue;
       const Vec<dim> n = -gradient_[k] / len;
       rows.push_back({k, b, n, static_cast<double>(g.mass[k] * share), static_cast<double>(g.momentum[k].dot(n)), true,
                       share});
@@ -273,9 +273,6 @@ class RigidContact {
 
  private:
   static Vec<dim> position(const Grid<dim>& g, size_t k) { return g.position(g.node(k)); }
-  static bool solid(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec<dim>& x) {
-    return std::any_of(bcs.begin(), bcs.end(), [&](const auto& b) { return b->is_solid(x); });
-  }
   // The directions in which the boundaries keep a body from moving at x (unit vectors into their solid), from
   // what their conditions remove of the velocities +-e_a. Removed parts along one direction n (a slip or separating
   // face, at any slope): n, turned towards the side that is solid a cell away. Along several (a sticky face, a
@@ -296,7 +293,7 @@ class RigidContact {
     const Eigen::SelfAdjointEigenSolver<Mat<dim>> eig(S);
     const Vec<dim> lambda = eig.eigenvalues();  // ascending
     auto towards_solid = [&](const Vec<dim>& n) {
-      const bool p = solid(bcs, x + dx * n), m = solid(bcs, x - dx * n);
+      const bool p = any_solid<dim>(bcs, x + dx * n), m = any_solid<dim>(bcs, x - dx * n);
       if (p != m) out.push_back(p ? n : Vec<dim>(-n));
     };
     if (lambda[dim - 2] < Real(1e-6) * lambda[dim - 1]) {
@@ -305,9 +302,6 @@ class RigidContact {
       for (int a = 0; a < dim; ++a) towards_solid(Vec<dim>::Unit(a));
     }
     return out;
-  }
-  static void apply_conditions(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec<dim>& x, Vec<dim>& v) {
-    for (const auto& b : bcs) b->apply(x, v);
   }
   static Vec<dim> rigid_velocity(const Body& B, const Vec<dim>& x) {
     const Vec<dim> V = B.s.template head<dim>().template cast<Real>();
