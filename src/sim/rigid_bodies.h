@@ -23,14 +23,15 @@
 // normal to the x-z plane (2D: counter-clockwise; 3D: -y, since the tilt turns +x towards +z). It is a wave maker
 // of given motion, the same in 2D and 3D (scenes/eqip_sermia_3d.json).
 // Before its C_p is replaced, each particle of a body in the shared field has its volume ratio follow the grid:
-// J_p <- min(1, J_p (1 + dt tr C_p)), so the particle's pressure (material/material.h, Rigid) resists other material flowing into the body. The
-// pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the water has left
-// (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
-// expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside
-// it, tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are
-// slow at coarse resolution. A pressure taken instead from the water around the body, continuous across its
-// surface, fed back on the water it compressed and made a surfacing body unstable. The contact removes the drag
-// but lets the water creep about half a cell into the body, which then floats too deep: docs/validation.md.)
+// J_p <- min(1, J_p (1 + dt tr C_p)), so the particle's pressure (material/material.h, Rigid) resists other material
+// flowing into the body. The pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the
+// water has left (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
+// expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside it,
+// tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are slow at
+// coarse resolution. A pressure taken instead from the water around the body, continuous across its surface, fed back
+// on the water it compressed and made a surfacing body unstable. The contact removes the drag; a body that surfaces in
+// it keeps a film of water one cell deep on its top and floats too deep, and the water at its corners is crushed at
+// fine cells: sim/rigid_contact.h, docs/validation.md.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity
@@ -396,7 +397,8 @@ class RigidBodies {
       mp.centre[b] = (first[b] / mp.mass[b]).template cast<Real>();
       mp.origin[b] = bodies[b].hinged ? bodies[b].pivot : mp.centre[b];
     }
-    for (const Sample& q : s) mp.inertia[q.body] += A::inertia(q.mass, q.x - mp.origin[q.body], D).template cast<double>();
+    for (const Sample& q : s)
+      mp.inertia[q.body] += A::inertia(q.mass, q.x - mp.origin[q.body], D).template cast<double>();
     return mp;
   }
   // The rigid particles of every body in the order of the one-process array, on every rank. The sums of project()
