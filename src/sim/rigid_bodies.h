@@ -30,8 +30,8 @@
 // tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are slow at
 // coarse resolution. A pressure taken instead from the water around the body, continuous across its surface, fed back
 // on the water it compressed and made a surfacing body unstable. The contact removes the drag; a body that surfaces in
-// it keeps a film of water one cell deep on its top and floats too deep, and the water at its corners is crushed at
-// fine cells: sim/rigid_contact.h, docs/validation.md.)
+// it keeps a film of water one cell deep on its top and floats too deep, and its rise stalls when it has moved half
+// a cell: sim/rigid_contact.h, docs/validation.md.)
 // advance() then moves the particles rigidly over dt (constitutive_update leaves rigid particles in place):
 //   x_p <- x_c + V dt + R(omega dt) (x_p - x_c)   (free),   x_p <- o + R(omega dt) (x_p - o)   (hinged),
 // so the body keeps its shape exactly, accumulates the orientation R and (2D) the angle, and turns its velocity

@@ -35,8 +35,8 @@
 // two thirds of the potential-flow acceleration (docs/validation.md, buoyancy). With the contact and XPIC(4) on the
 // water the block rises within 9 % at D/16. Known limits (docs/validation.md, "Session 24" and session 25): a
 // surfacing body keeps a film of water one cell deep on its top, which does not drain, so it floats that much too
-// deep; and the water at a body's corners is crushed at fine cells (J down to 0.8 at D/32 by 0.2 s, as in the
-// shared field), which stalls the rise at D/32 and shortens the time step.
+// deep; and once a body has moved half a cell from where its faces lay on grid planes, the shares above are those
+// of faces midway between them and the body the water sees is larger: the rise at D/32 stalls there (0.19 s).
 // Sums over the contact nodes are exact (math/exact_sum.h), so they have the same bits for any order, thread
 // count and number of ranks; a distributed run adds its own nodes only (`owned`) and sums the accumulators
 // over the ranks, so every rank solves the same system; every rank holds every rigid particle (gathered in the
