@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""float_draft.py - how a buoyant body comes to float (issue 20's terminal criterion: the Archimedes draft within
+5 %) from a run's probes.csv: per time interval, the mean draft (the water level of a gauge far from the body
+less the body's bottom, centre - H/2), its error against the Archimedes draft (rho_b / rho_w) H, the body's top
+against the level, its largest vertical speed, and the level itself (a falling level is water lost).
+
+    /usr/bin/python3 tools/float_draft.py RUN/probes.csv --height 0.4 [--ratio 0.92] [--every 1]
+                                          [--centre block_y --speed speed_y --level level]
+
+The column names are those of scenes/rigid_rise_float_2d.json (rigid_position "block", rigid_velocity "speed",
+wave_gauge "level" with still_level 0, so that it reads the absolute height). Not part of the tests.
+"""
+import argparse
+import csv
+
+import numpy as np
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("probes")
+    ap.add_argument("--height", type=float, required=True, help="the body's height H (m)")
+    ap.add_argument("--ratio", type=float, default=0.92, help="density ratio rho_b / rho_w (default 0.92)")
+    ap.add_argument("--every", type=float, default=1.0, help="length of the intervals (s, default 1)")
+    ap.add_argument("--centre", default="block_y")
+    ap.add_argument("--speed", default="speed_y")
+    ap.add_argument("--level", default="level")
+    args = ap.parse_args()
+    with open(args.probes) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise SystemExit(f"{args.probes}: no rows")
+    for c in ("time", args.centre, args.speed, args.level):
+        if c not in rows[0]:
+            raise SystemExit(f"{args.probes}: no column '{c}' (columns: {', '.join(rows[0])})")
+    t = np.array([float(r["time"]) for r in rows])
+    y = np.array([float(r[args.centre]) for r in rows])
+    v = np.array([float(r[args.speed]) for r in rows])
+    level = np.array([float(r[args.level]) for r in rows])
+    draft = level - (y - args.height / 2)
+    archimedes = args.ratio * args.height
+    print(f"Archimedes draft {archimedes:.4f} m")
+    print("interval (s)   draft (m)  error    top - level (m)  largest |v| (m/s)  level (m)")
+    start = 0.0
+    while start < t[-1]:
+        s = (t > start) & (t <= start + args.every)
+        if s.any():
+            d = draft[s].mean()
+            print(f"{start:5.1f}-{start + args.every:5.1f}   {d:.4f}   {100 * (d / archimedes - 1):+6.1f} %  "
+                  f"{(y[s] + args.height / 2 - level[s]).mean():+.4f}          {np.abs(v[s]).max():.4f}            "
+                  f"{level[s].mean():.4f}")
+        start += args.every
+
+
+if __name__ == "__main__":
+    main()
