@@ -11,9 +11,15 @@ The column names are those of scenes/rigid_rise_float_2d.json (rigid_position "b
 wave_gauge "level" with still_level 0, so that it reads the absolute height). Not part of the tests.
 """
 import argparse
-import csv
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_style import fail, read_csv  # noqa: E402
+
+TOOL = "float_draft"
 
 
 def main():
@@ -26,17 +32,15 @@ def main():
     ap.add_argument("--speed", default="speed_y")
     ap.add_argument("--level", default="level")
     args = ap.parse_args()
-    with open(args.probes) as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise SystemExit(f"{args.probes}: no rows")
+    if not os.path.isfile(args.probes):
+        fail(TOOL, f"{args.probes}: no such file")
+    cols = read_csv(args.probes)
     for c in ("time", args.centre, args.speed, args.level):
-        if c not in rows[0]:
-            raise SystemExit(f"{args.probes}: no column '{c}' (columns: {', '.join(rows[0])})")
-    t = np.array([float(r["time"]) for r in rows])
-    y = np.array([float(r[args.centre]) for r in rows])
-    v = np.array([float(r[args.speed]) for r in rows])
-    level = np.array([float(r[args.level]) for r in rows])
+        if c not in cols:
+            fail(TOOL, f"{args.probes}: no column '{c}' (columns: {', '.join(cols)})")
+    t, y, v, level = cols["time"], cols[args.centre], cols[args.speed], cols[args.level]
+    if len(t) == 0:
+        fail(TOOL, f"{args.probes}: no rows")
     draft = level - (y - args.height / 2)
     archimedes = args.ratio * args.height
     print(f"Archimedes draft {archimedes:.4f} m")

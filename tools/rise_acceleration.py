@@ -10,9 +10,15 @@ velocity (or the parabola's velocity at T2).
 Prints "slope a = ... m/s^2, mean a = ... m/s^2". Not part of the tests.
 """
 import argparse
-import csv
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_style import fail, read_csv  # noqa: E402
+
+TOOL = "rise_acceleration"
 
 
 def main():
@@ -24,18 +30,22 @@ def main():
     ap.add_argument("--g", type=float, default=9.81)
     ap.add_argument("--window", nargs=2, type=float, default=[0.1, 0.3])
     a = ap.parse_args()
-    with open(a.probes) as f:
-        rows = list(csv.DictReader(f))
-    t = np.array([float(r["time"]) for r in rows])
+    if not os.path.isfile(a.probes):
+        fail(TOOL, f"{a.probes}: no such file")
+    cols = read_csv(a.probes)
+    for c in ["time"] + ([a.velocity] if a.velocity else list(a.centre or [])):
+        if c not in cols:
+            fail(TOOL, f"{a.probes}: no column '{c}' (columns: {', '.join(cols)})")
+    t = cols["time"]
     t1, t2 = a.window
     w = (t >= t1 - 1e-9) & (t <= t2 + 1e-9)
     if a.velocity:
-        v = np.array([float(r[a.velocity]) for r in rows])
+        v = cols[a.velocity]
         slope = np.polyfit(t[w], v[w], 1)[0]
         end = np.argmin(abs(t - t2))
         mean = v[end] / t[end]
     else:
-        y = np.array([float(r[a.centre[0]]) / (float(r[a.centre[1]]) * a.g) for r in rows])
+        y = cols[a.centre[0]] / (cols[a.centre[1]] * a.g)
         c2, c1, _ = np.polyfit(t[w], y[w], 2)
         slope = 2 * c2
         # mean acceleration from rest: the parabola's velocity at t2 over t2
