@@ -8,21 +8,12 @@ bytewise (NaN included), and the frames' field data (TimeValue, material_names; 
 Prints one line per pair; exit code 0 if every pair is the same, 1 otherwise, 2 on a usage error.
 """
 import os
-import re
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import read_field_data, read_frame  # noqa: E402
-
-
-def first_piece(path):
-    """The file whose field data stands for the frame: the .vtu itself, or a .pvtu's first piece."""
-    if not path.endswith(".pvtu"):
-        return path
-    piece = re.search(r'<Piece Source="([^"]+)"', open(path).read()).group(1)
-    return os.path.join(os.path.dirname(path), piece)
+from vtu import first_piece, read_field_data, read_frame  # noqa: E402
 
 
 def by_id(path):

@@ -5,6 +5,7 @@ grid, the check for particles that pack closer than their J says (docs/water.md,
     /usr/bin/python3 tools/volume_fraction.py OUT_DIR FRAME [--material water] [--box XMIN YMIN XMAX YMAX]
                                               [--png FILE]
 
+FRAME is the frame number: OUT_DIR/particles_FRAME.vtu, or a distributed run's particles_FRAME.pvtu.
 The particles' reference volumes V0 = volume / J (all materials) are spread to the grid nodes with the quadratic
 B-spline weights w_ip of the run (dx from OUT_DIR/scene.resolved.json), psi_i = sum_p w_ip V0_p / dx^dim, and read
 back at each particle of the chosen material, psi_p = sum_i w_ip psi_i (the scatter and gather of p2g and g2p).
@@ -29,7 +30,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_style import fail  # noqa: E402
-from vtu import read_field_data, read_vtu  # noqa: E402
+from vtu import first_piece, read_field_data, read_frame  # noqa: E402
 
 TOOL = "volume_fraction"
 
@@ -84,6 +85,8 @@ def main():
     args = ap.parse_args()
 
     frame = os.path.join(args.out, f"particles_{args.frame:04d}.vtu")
+    if not os.path.isfile(frame) and os.path.isfile(frame[:-3] + "pvtu"):
+        frame = frame[:-3] + "pvtu"  # a distributed run's frame
     scene_path = os.path.join(args.out, "scene.resolved.json")
     for p in (frame, scene_path):
         if not os.path.isfile(p):
@@ -93,8 +96,8 @@ def main():
     all_faces = [a + side for a in "xyz"[:dim] for side in "-+"]  # walls.cpp: faces default to all of them
     faces = sorted({f for b in scene.get("boundaries", []) if b.get("type") == "walls" and b.get("condition") == "slip"
                     for f in b.get("faces", all_faces)})
-    points, fields = read_vtu(frame)
-    names = read_field_data(frame).get("material_names", [])
+    points, fields = read_frame(frame)
+    names = read_field_data(first_piece(frame)).get("material_names", [])
     if args.material not in names:
         fail(TOOL, f"{frame}: no material '{args.material}' (the frame has {', '.join(names) or 'none'})")
     x = points[:, :dim].astype(np.float64)
@@ -130,7 +133,7 @@ def main():
             a.scatter(x[~mine & (fields["material"] != names.index(args.material)), 0],
                       x[~mine & (fields["material"] != names.index(args.material)), 1], s=0.5, c="k")
             a.set_aspect("equal")
-            a.set_title(f"{title}, t = {read_field_data(frame)['TimeValue'][0]:g} s")
+            a.set_title(f"{title}, t = {read_field_data(first_piece(frame))['TimeValue'][0]:g} s")
             fig.colorbar(sc, ax=a)
         fig.savefig(args.png, dpi=90)
         print(f"wrote {args.png}")

@@ -1,9 +1,11 @@
 """vtu.py - read cdmpm particle frames (VTK XML UnstructuredGrid, raw appended) into numpy arrays.
 
-    from vtu import read_vtu, read_field_data
+    from vtu import first_piece, read_field_data, read_frame, read_pvd, read_vtu
     points, fields = read_vtu("out/particles_0010.vtu")   # points: (n, 3); fields: name -> array
     meta = read_field_data("out/particles_0010.vtu")      # e.g. {"TimeValue": array([2.]), "material_names": ["water", "ice"]}
     frames = read_pvd("out")                               # [(time, "particles_NNNN.vtu"), ...] in file order
+    points, fields = read_frame("out/particles_0010.pvtu")  # .vtu or a distributed run's .pvtu
+    meta = read_field_data(first_piece("out/particles_0010.pvtu"))
 
 Reads appended data with header_type UInt64, uncompressed (a UInt64 byte count, then the values) or
 compressed with compressor="vtkZLibDataCompressor" (a UInt64 header [blocks, block size, size of a partial
@@ -97,3 +99,11 @@ def read_pvtu(path):
 def read_frame(path):
     """read_vtu or read_pvtu, by the file's extension."""
     return read_pvtu(path) if path.endswith(".pvtu") else read_vtu(path)
+
+
+def first_piece(path):
+    """The file whose field data stands for the frame: the .vtu itself, or a .pvtu's first piece."""
+    if not path.endswith(".pvtu"):
+        return path
+    piece = re.search(r'<Piece Source="([^"]+)"', open(path).read()).group(1)
+    return os.path.join(os.path.dirname(path), piece)
