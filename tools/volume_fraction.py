@@ -96,14 +96,18 @@ def main():
     all_faces = [a + side for a in "xyz"[:dim] for side in "-+"]  # walls.cpp: faces default to all of them
     faces = sorted({f for b in scene.get("boundaries", []) if b.get("type") == "walls" and b.get("condition") == "slip"
                     for f in b.get("faces", all_faces)})
+    if args.png and dim != 2:
+        fail(TOOL, "--png draws 2D runs only")
     points, fields = read_frame(frame)
-    names = read_field_data(first_piece(frame)).get("material_names", [])
+    meta = read_field_data(first_piece(frame))
+    names = meta.get("material_names", [])
     if args.material not in names:
         fail(TOOL, f"{frame}: no material '{args.material}' (the frame has {', '.join(names) or 'none'})")
+    of_material = fields["material"] == names.index(args.material)
     x = points[:, :dim].astype(np.float64)
     J = fields["J"].astype(np.float64)
     v0 = fields["volume"].astype(np.float64) / J
-    mine = fields["material"] == names.index(args.material)
+    mine = of_material.copy()
     if args.box:
         if len(args.box) != 2 * dim:
             fail(TOOL, f"--box takes {2 * dim} numbers in {dim}D, got {len(args.box)}")
@@ -125,15 +129,12 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        if dim != 2:
-            fail(TOOL, "--png draws 2D runs only")
         fig, ax = plt.subplots(2, 1, figsize=(10, 10))
         for a, v, lim, title in ((ax[0], psi * j, (0.85, 1.15), "claimed volume fraction psi J"), (ax[1], j, (0.97, 1.03), "J")):
             sc = a.scatter(x[mine, 0], x[mine, 1], c=v, s=0.5, vmin=lim[0], vmax=lim[1], cmap="coolwarm")
-            a.scatter(x[~mine & (fields["material"] != names.index(args.material)), 0],
-                      x[~mine & (fields["material"] != names.index(args.material)), 1], s=0.5, c="k")
+            a.scatter(x[~of_material, 0], x[~of_material, 1], s=0.5, c="k")
             a.set_aspect("equal")
-            a.set_title(f"{title}, t = {read_field_data(first_piece(frame))['TimeValue'][0]:g} s")
+            a.set_title(f"{title}, t = {meta['TimeValue'][0]:g} s")
             fig.colorbar(sc, ax=a)
         fig.savefig(args.png, dpi=90)
         print(f"wrote {args.png}")
