@@ -49,6 +49,13 @@ struct Material {
   bool contact() const {
     return visit([](const auto& m) { if constexpr (requires { m.contact; }) return m.contact; else return false; });
   }
+  // Water's `continuity` "interpolated": g2p sets tr C_p to the divergence of the interpolated velocity
+  // (transfer/g2p.h); false for the other models.
+  bool interpolated_divergence() const {
+    return visit([](const auto& m) {
+      if constexpr (requires { m.interpolated_divergence; }) return m.interpolated_divergence; else return false;
+    });
+  }
   // The XPIC order of the FLIP share (transfer/flip.h); 0: plain FLIP, or no FLIP share.
   int xpic() const {
     return visit([](const auto& m) -> int { if constexpr (requires { m.flip; }) return m.flip.xpic; else return 0; });

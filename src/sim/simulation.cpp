@@ -57,6 +57,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   for (const Material& m : materials) {
     rigid_material_.push_back(m.traits().rigid);
     contact_material_.push_back(m.contact());
+    interpolated_divergence_.push_back(m.interpolated_divergence());
   }
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
@@ -184,7 +185,7 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
   timer_.run(Phase::G2P, [&] {
-    g2p(particles, grid, bins_);
+    g2p(particles, grid, bins_, interpolated_divergence_);
     if (any_flip_) flip_blend(particles, materials, flip_u_);
   });
   timer_.run(Phase::ConstitutiveUpdate, [&] {

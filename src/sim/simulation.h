@@ -115,6 +115,7 @@ class Simulation {
   Real material_dt_ = 0;                 // smallest of the materials' own time-step limits
   std::vector<uint8_t> rigid_material_;  // per material: its particles are moved by a rigid body
   std::vector<uint8_t> contact_material_;  // per material: a rigid body in contact, in its own field
+  std::vector<uint8_t> interpolated_divergence_;  // per material: tr C_p from the interpolated velocity (g2p.h)
   ParticleBins bins_;
   RigidContact<dim> contact_;      // the rigid bodies' grid field and its contact with the others (sim/rigid_contact.h)
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)

@@ -158,4 +158,33 @@ inline void gather_from_patch(const PatchRecords<dim>& pv, const BSplineStencil<
   for (int c = 0; c < dim; ++c) B.col(c) = col[c].template head<dim>();
 }
 
+// The divergence of the interpolated velocity v(x) = sum_i w_i(x) v_i at the particle, from the patch velocities:
+//   div v(x_p) = sum_i v_i . grad w_ip,  grad w_ip = (w'_a(f_a) prod_{c != a} w_c(f_c))_a / dx,
+// with the quadratic B-spline's derivatives for the nodes at offsets 0, 1, 2 from the base node:
+//   w'(f) = (f - 3/2, 2 (1 - f), f - 1/2)   (f = s.fx, the particle's offset from the base node, in cells).
+template <int dim>
+inline Real divergence_from_patch(const PatchRecords<dim>& pv, const BSplineStencil<dim>& s, int k0, Real inv_dx) {
+  constexpr int W = BlockPatch<dim>::width;
+  Real d[dim][3];
+  for (int a = 0; a < dim; ++a) {
+    const Real f = s.fx[a];
+    d[a][0] = f - Real(1.5), d[a][1] = Real(2) * (Real(1) - f), d[a][2] = f - Real(0.5);
+  }
+  Real div = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if constexpr (dim == 2) {
+        const NodeRecord& v = pv[k0 + i * W + j];
+        div += v[0] * d[0][i] * s.w[1][j] + v[1] * s.w[0][i] * d[1][j];
+      } else {
+        for (int l = 0; l < 3; ++l) {
+          const NodeRecord& v = pv[k0 + (i * W + j) * W + l];
+          div += v[0] * d[0][i] * s.w[1][j] * s.w[2][l] + v[1] * s.w[0][i] * d[1][j] * s.w[2][l] +
+                 v[2] * s.w[0][i] * s.w[1][j] * d[2][l];
+        }
+      }
+    }
+  return div * inv_dx;
+}
+
 }  // namespace cdmpm

@@ -48,7 +48,7 @@ template <int dim>
 void flip_residual(const Particles<dim>& p, const std::vector<Material>& materials, const Grid<dim>& g,
                    const ParticleBins& bins, std::vector<Vec<dim>>& u) {
   u.assign(p.size(), Vec<dim>::Zero());
-  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>&) {
+  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>&, const auto&) {
     const Material& m = materials[p.material[q]];
     if (m.flip() > 0) u[q] = (m.xpic() == 0 ? p.v[q] : Vec<dim>::Zero()) - v;  // XPIC: + S v*, xpic_accumulate
   });
@@ -59,7 +59,7 @@ template <int dim>
 void interpolate_velocity(const Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins,
                           std::vector<Vec<dim>>& z) {
   z.resize(p.size());
-  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>&) { z[q] = v; });
+  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>&, const auto&) { z[q] = v; });
 }
 
 // u_p += z_p (z = S D_k, the k-th term of the XPIC recurrence at the particles) for the particles whose

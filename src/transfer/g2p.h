@@ -3,11 +3,20 @@
 //   v_p = sum_i w_ip v_i,   C_p = D^-1 sum_i w_ip v_i (x_i - x_p)^T
 // (Jiang et al. 2015, eq. 9-10; D^-1 = 4/dx^2 for quadratic B-splines). C_p is both the APIC affine
 // matrix and the particle's velocity gradient used by the constitutive update (the next phase of the step,
-// material/constitutive_update.h). Particles are processed block by block:
+// material/constitutive_update.h). For the materials that ask for it (water's `continuity` "interpolated",
+// material/water.h) C_p's isotropic part is replaced so that its trace is the divergence of the interpolated
+// velocity, the field that moves the particles (sim/advect.h):
+//   C_p <- C_p + (div v(x_p) - tr C_p) / dim I,   div v(x_p) = sum_i v_i . grad w_ip   (block_patch.h)
+// APIC's C_p is a gradient exact for a velocity linear across the stencil only; where the velocity curves, its
+// trace differs from the divergence of v(x) by O(dx) and depends on where the particle sits in its cell, so J
+// drifts from the volume the particles actually leave each other. An isotropic matrix has no skew part, so the
+// change leaves the transfer's linear and angular momentum as they are. Particles are processed block by block:
 // a block's grid velocities are copied once into a dense patch and gathered from there (block_patch.h).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 #include "core/bspline.h"
 #include "core/particles.h"
@@ -18,8 +27,9 @@
 namespace cdmpm {
 
 // Visits every particle q, block by block, with the grid velocity at it and the matrix of APIC's C,
-//   f(q, v, B),   v = sum_i w_ip v_i,   B = sum_i w_ip v_i (x_i - x_p)^T / dx,
-// the nodes' velocities v_i being in g.momentum (after grid_update). Also used by transfer/flip.h.
+//   f(q, v, B, div),   v = sum_i w_ip v_i,   B = sum_i w_ip v_i (x_i - x_p)^T / dx,
+// the nodes' velocities v_i being in g.momentum (after grid_update); div() returns div v(x_p), computed on demand.
+// Also used by transfer/flip.h.
 template <int dim, class F>
 void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, F&& f) {
   const size_t nb = bins.bin_count();
@@ -36,17 +46,25 @@ void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const Particle
       Mat<dim> B;  // sum_i w_i v_i o_i^T; the node's offset from the particle is o_i - fx
       gather_from_patch<dim>(pv, s, patch.base_index(s), v, B);
       B -= v * s.fx.transpose();
-      f(q, v, B);
+      const int k0 = patch.base_index(s);
+      f(q, v, B, [&] { return divergence_from_patch<dim>(pv, s, k0, g.inv_dx); });
     }
   }
 }
 
+// `interpolated_divergence`: per material, whether tr C_p is the divergence of the interpolated velocity (above);
+// empty: none.
 template <int dim>
-void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins) {
+void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins,
+         const std::vector<uint8_t>& interpolated_divergence = {}) {
   const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
-  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>& B) {
+  const bool any = std::find(interpolated_divergence.begin(), interpolated_divergence.end(), 1) !=
+                   interpolated_divergence.end();
+  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>& B, const auto& div) {
     p.v[q] = v;
     p.C[q] = Dinv_dx * B;
+    if (any && interpolated_divergence[p.material[q]])
+      p.C[q].diagonal().array() += (div() - p.C[q].trace()) / Real(dim);
   });
 }
 
