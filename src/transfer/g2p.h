@@ -44,9 +44,9 @@ void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const Particle
       const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
       Vec<dim> v;
       Mat<dim> B;  // sum_i w_i v_i o_i^T; the node's offset from the particle is o_i - fx
-      gather_from_patch<dim>(pv, s, patch.base_index(s), v, B);
-      B -= v * s.fx.transpose();
       const int k0 = patch.base_index(s);
+      gather_from_patch<dim>(pv, s, k0, v, B);
+      B -= v * s.fx.transpose();
       f(q, v, B, [&] { return divergence_from_patch<dim>(pv, s, k0, g.inv_dx); });
     }
   }
