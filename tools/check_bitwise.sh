@@ -39,7 +39,7 @@ CASES=(
   "lab_gf_2d|output.frames=true time.end=0.2 time.frame_interval=0.05|as lab_bf_2d (41k particles)"
   "rigid_rise_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s, 540 steps of 12.8k particles; frames turned on)"
   "rigid_rise_contact_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s at dx = 0.05 m): the block in contact (sim/rigid_contact.h) with J-bar, FLIP and XPIC(4) water; frames turned on"
-  "rigid_rise_float_2d|parameters.dx=0.05 time.end=0.5 time.frame_interval=0.25|the block of rigid_rise_2d with APIC water starting to rise at dx = 0.05 m (full run 10 s at 0.025 m, to the surface and back)"
+  "rigid_rise_float_2d|parameters.dx=0.05 time.end=0.5 time.frame_interval=0.25|the block of rigid_rise_2d with APIC water (continuity interpolated) starting to rise at dx = 0.05 m (full run 10 s at 0.025 m, to the surface and back)"
   "rigid_float_2d|output.frames=true time.end=0.5 time.frame_interval=0.25|the block released at the still level starts to settle (full run 6 s; frames turned on)"
   "eqip_sermia_wedge_2d|time.end=4 time.frame_interval=2|the rigid wedge slides on its failure plane (boundary key within) and reaches the water after about 3 s (full run 160 s)"
   "blob_rise_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s, about 510 steps of 12.8k particles; frames turned on)"

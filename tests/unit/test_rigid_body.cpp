@@ -466,8 +466,9 @@ TEST(RigidBody, StirredPoolKeepsItsLevelWithInterpolatedContinuity) {
 // 3.1 s with 0.95; docs/water.md, "Buoyancy: J-bar and FLIP"). Set here: both with XPIC(4), which runs the 6 s
 // but leaves the block still creeping up, too deep (docs/water.md, "XPIC"). The block in contact (rigid key
 // `contact`) floats deeper still, +14 to +17 % (docs/validation.md, "Session 24"). The issue's own 0.4 m block
-// (scenes/rigid_rise_float_2d.json, 1 m deep, APIC water) does not stay at the surface at all: it comes to 4 cm under
-// the level and sinks back while the water packs (docs/validation.md, buoyancy, "session 26"). Run with
+// (scenes/rigid_rise_float_2d.json, 1 m deep) stays at the surface with the water's `continuity` "interpolated", but
+// 18-31 % too deep at D/16; with "apic" it comes to 4 cm under the level and sinks back while the water packs
+// (docs/validation.md, buoyancy, "session 26" and "session 28"). Run with
 // --gtest_also_run_disabled_tests.
 TEST(RigidBody, DISABLED_SubmergedBlockRisesAndFloatsAtArchimedesDraft) {
   const double H_b = 0.2;
