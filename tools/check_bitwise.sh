@@ -44,6 +44,7 @@ CASES=(
   "eqip_sermia_wedge_2d|time.end=4 time.frame_interval=2|the rigid wedge slides on its failure plane (boundary key within) and reaches the water after about 3 s (full run 160 s)"
   "blob_rise_2d|output.frames=true time.frame_interval=0.1|the full run (end 0.3 s, about 510 steps of 12.8k particles; frames turned on)"
   "ice_rise_2d|output.frames=true time.end=0.05 time.frame_interval=0.025|the ice block's start (5700 steps to 0.3 s at its P-wave time step; ~1000 to 0.05 s)"
+  "ice_rise_contact_2d|output.frames=true time.end=0.05 time.frame_interval=0.025|the ice block in a field of its own (sim/field_contact.h) starting to rise; ~1000 steps to 0.05 s"
   "sliding_block_2d|time.end=2 time.frame_interval=0.5|the push starts; ~1000 steps of 20k particles (the first iceberg needs 100+ s: not cheap)"
   "solitary_runup_2d|output.frames=true time.end=1 time.frame_interval=0.25|the solitary wave travels 3 h along the tank (hazard record, solitary_wave initial state); ~1100 steps of 12.6k particles (full run 6.5 s; frames turned on)"
   "wave_celerity_2d|output.frames=true time.end=0.4 time.frame_interval=0.1|the released box starts the wave; ~680 steps of 22k particles (full run 4.5 s; frames turned on)"

@@ -22,7 +22,8 @@
 // Scene keys (docs/ice.md, docs/scenes.md): density, youngs_modulus, poissons_ratio (0.3); M or
 // friction_angle; beta; xi; exactly one of p0, alpha0, tensile_strength; hardening (true); plastic (true);
 // hydrofracture {water_level, water_density (1025), region} (off); flip (0: the FLIP share) and xpic (off:
-// its XPIC order), transfer/flip.h.
+// its XPIC order), transfer/flip.h; contact (false: the ice shares the grid's velocity field with the water; true: a
+// field of its own in frictionless contact with the other materials, sim/field_contact.h; needs flip 0).
 #pragma once
 
 #include <algorithm>
@@ -66,6 +67,7 @@ struct Ice {
   Real alpha_initial = 0;   // alpha giving p0_initial
   PoroDamage hydrofracture;  // water pressure in damaged ice (off unless the scene sets "hydrofracture")
   FlipShare flip;            // the FLIP share of the velocity update and its XPIC order (transfer/flip.h)
+  bool contact = false;      // a velocity field of its own, in frictionless contact with the others (sim/field_contact.h)
 
   static Ice parse(const SceneReader& r, const Node& n);
 
@@ -130,9 +132,12 @@ struct Ice {
 // Ice: E, nu, density; M or friction_angle; beta, xi; exactly one of p0, alpha0, tensile_strength.
 inline Ice Ice::parse(const SceneReader& r, const Node& m) {
   r.object(m, {"type", "density", "youngs_modulus", "poissons_ratio", "M", "friction_angle", "beta", "xi", "p0",
-               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture", "flip", "xpic"});
+               "alpha0", "tensile_strength", "hardening", "plastic", "hydrofracture", "flip", "xpic", "contact"});
   Ice ice;
   ice.flip = read_flip_share(r, m);
+  ice.contact = r.boolean(m, "contact", false);
+  if (ice.contact && ice.flip.a > 0)
+    r.fail(m.child("flip"), "not used with \"contact\" (the ice's own field is transferred by APIC; remove \"flip\" or set it to 0)");
   // Bounds of real materials, which keep the time step and the state representable.
   ice.rho0 = static_cast<Real>(r.number(r.required(m, "density"), {1, 1e5}, " kg/m^3"));
   const double E = r.number(r.required(m, "youngs_modulus"), {0, 1e12, true, false}, " Pa");

@@ -45,7 +45,9 @@ struct Material {
   Real flip() const {
     return visit([](const auto& m) -> Real { if constexpr (requires { m.flip; }) return m.flip.a; else return Real(0); });
   }
-  // A rigid body in a field of its own, in frictionless contact with the others (sim/rigid_contact.h).
+  // A body in a velocity field of its own, in frictionless contact with the others: a rigid body's field
+  // (sim/rigid_contact.h) or the deformable solids' field (ice; sim/field_contact.h). Such particles are left out
+  // of the shared field's p2g (transfer/p2g.h).
   bool contact() const {
     return visit([](const auto& m) { if constexpr (requires { m.contact; }) return m.contact; else return false; });
   }

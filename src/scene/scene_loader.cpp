@@ -126,6 +126,17 @@ class Loader {
         ice->hydrofracture.gravity = static_cast<Real>(g);
       }
     }
+    // Ice in a field of its own (sim/field_contact.h) and a rigid body in contact (sim/rigid_contact.h): the rigid
+    // contact meets the shared field only, so the body would pass through that ice.
+    const auto contact_of = [&](bool rigid) {
+      for (const Material& m : s_.materials)
+        if (m.contact() && m.traits().rigid == rigid) return m.name;
+      return std::string();
+    };
+    if (const std::string ice = contact_of(false); !ice.empty() && !contact_of(true).empty())
+      r_.fail(ms[ice].child("contact"), "a rigid body in contact (materials." + contact_of(true) +
+                                            ".contact) meets the shared field only (sim/rigid_contact.h), not the ice's own "
+                                            "field; give \"contact\" to the rigid bodies or to the ice, not both");
   }
 
   void body(const Node& b) {

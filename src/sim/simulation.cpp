@@ -56,9 +56,19 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   }
   for (const Material& m : materials) {
     rigid_material_.push_back(m.traits().rigid);
-    contact_material_.push_back(m.contact());
+    contact_material_.push_back(m.contact() && m.traits().rigid);
     interpolated_divergence_.push_back(m.interpolated_divergence());
   }
+  solid_field_.configure(materials, grid.dx);
+#ifdef CDMPM_MPI
+  // (A rigid body in contact beside it is refused by the scene loader.)
+  if (domain_ && solid_field_.any())
+    for (const Material& m : materials)
+      if (m.contact() && !m.traits().rigid)
+        throw SceneError(s.path + ": materials." + m.name + ".contact: a deformable body in a field of its own runs in "
+                         "one process only (the distributed halo exchange carries one field); remove \"contact\" or run "
+                         "without mpirun");
+#endif
   update_speeds();
   wave_dt_at_start = static_cast<Real>(s.time.wave_cfl) * grid.dx / std::max(max_wave_speed, Real(1e-30));
   if (settle && s.time.settle > 0) settle_elastically(s.time.settle, static_cast<Real>(s.time.settle_damping));
@@ -179,6 +189,7 @@ void Simulation<dim>::advance(Real dt, double t_end) {
       std::swap(particles.J, J_state_);
     }
     p2g_phase(dt);
+    if (solid_field_.any()) solid_field_.scatter(particles, materials, bins_, dt);
     if (any_j_bar_) std::swap(particles.J, J_state_);
   });
   timer_.run(Phase::BoundaryFold, [&] { boundary_fold(); });
@@ -186,6 +197,7 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
   timer_.run(Phase::G2P, [&] {
     g2p(particles, grid, bins_, interpolated_divergence_);
+    if (solid_field_.any()) solid_field_.gather(particles, bins_);
     if (any_flip_) flip_blend(particles, materials, flip_u_);
   });
   timer_.run(Phase::ConstitutiveUpdate, [&] {
@@ -245,9 +257,9 @@ void Simulation<dim>::flip_transfer() {
 template <int dim>
 void Simulation<dim>::transfer_velocity() {
   p2g_phase(Real(0));
-  boundary_fold();
+  boundary_fold(false);
   grid_update<dim>(grid, Vec<dim>::Zero(), Real(0), {});
-  boundary_unfold();
+  boundary_unfold(false);
 }
 
 // Every reorder_interval steps the particle arrays are reordered by block (memory locality); then the bins of
@@ -268,6 +280,7 @@ void Simulation<dim>::bin() {
   bins_.build(particles, grid);
   if (bed_.empty()) {
     grid.activate(bins_.blocks);
+    if (solid_field_.any()) solid_field_.activate(grid, bins_.blocks);  // the same slots as the shared field
     return;
   }
   // The well-balanced bed: the blocks of the particles and of the bed layer.
@@ -275,11 +288,16 @@ void Simulation<dim>::bin() {
   std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
                  std::back_inserter(blocks_));
   grid.activate(blocks_);
+  if (solid_field_.any()) solid_field_.activate(grid, blocks_);
 }
 
+// The solids' own field (sim/field_contact.h) is folded and unfolded with the shared one, except for the FLIP
+// transfer, which does not fill it.
 template <int dim>
-void Simulation<dim>::boundary_fold() {
+void Simulation<dim>::boundary_fold(bool solid_field) {
   for (const auto& b : boundaries) b->fold_ghosts(grid);
+  if (solid_field && solid_field_.any())
+    for (const auto& b : boundaries) b->fold_ghosts(solid_field_.field);
 }
 
 // Moving obstacles take their position at the start of the step, then the grid velocities are updated.
@@ -290,6 +308,7 @@ void Simulation<dim>::grid_update_phase(Real dt) {
     b->prepare(*this, dt);
   }
   grid_update(grid, gravity, dt, boundaries);
+  if (solid_field_.any()) solid_field_.update(grid, gravity, dt, boundaries);  // and its contact with the shared field
   if (!rigid.any_contact()) return;
   // The rigid bodies' contact with the other materials (sim/rigid_contact.h); a distributed run sums its own nodes.
   std::function<bool(size_t)> owned = [](size_t) { return true; };
@@ -306,8 +325,10 @@ void Simulation<dim>::grid_update_phase(Real dt) {
 // Unfold in the reverse order of folding (the adjoint), so a ghost that is folded twice, e.g. at the corner
 // of a wall and an obstacle, reads its mirror after that mirror has itself been unfolded.
 template <int dim>
-void Simulation<dim>::boundary_unfold() {
+void Simulation<dim>::boundary_unfold(bool solid_field) {
   for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(grid);
+  if (solid_field && solid_field_.any())
+    for (auto b = boundaries.rbegin(); b != boundaries.rend(); ++b) (*b)->unfold_ghosts(solid_field_.field);
 #ifdef CDMPM_MPI
   if (domain_) domain_->halo.share_velocities(grid);
 #endif

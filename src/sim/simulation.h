@@ -5,6 +5,9 @@
 //   particles --bin, p2g--> grid --boundary_fold, grid_update, boundary_unfold--> grid --g2p--> particles
 //   --constitutive_update, rigid_projection, advect, sinks--> particles --reductions--> next time step
 // Each phase is a function in the file of its concept; the step below only sequences them and times each.
+// Ice with `contact` goes through the same phases in a grid field of its own (sim/field_contact.h: scattered after
+// the shared field, folded, updated and unfolded with it, in contact with it after both grid updates, read back
+// after the shared g2p); rigid bodies with `contact` have their bodies' field (sim/rigid_contact.h).
 // The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, wave_cfl * the materials' own limits
 // (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h).
 // The simulation owns its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output
@@ -31,6 +34,7 @@
 #include "probe/crack_starts.h"
 #include "scene/scene.h"
 #include "sim/bed_layer.h"
+#include "sim/field_contact.h"
 #include "sim/phases.h"
 #include "sim/rigid_bodies.h"
 #include "transfer/flip.h"
@@ -99,9 +103,9 @@ class Simulation {
   void p2g_phase(Real dt);
   void flip_transfer();
   void transfer_velocity();
-  void boundary_fold();
+  void boundary_fold(bool solid_field = true);
   void grid_update_phase(Real dt);
-  void boundary_unfold();
+  void boundary_unfold(bool solid_field = true);
   void rigid_projection(Real dt);
   void advect_phase(Real dt);
   void update_speeds();
@@ -118,6 +122,7 @@ class Simulation {
   std::vector<uint8_t> interpolated_divergence_;  // per material: tr C_p from the interpolated velocity (g2p.h)
   ParticleBins bins_;
   RigidContact<dim> contact_;      // the rigid bodies' grid field and its contact with the others (sim/rigid_contact.h)
+  FieldContact<dim> solid_field_;  // the deformable solids' own field and its contact with the others (sim/field_contact.h)
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   bool any_flip_ = false, any_j_bar_ = false;  // some material has a FLIP share, J-bar (material/water.h)

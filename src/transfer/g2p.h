@@ -26,12 +26,18 @@
 
 namespace cdmpm {
 
-// Visits every particle q, block by block, with the grid velocity at it and the matrix of APIC's C,
+// Every particle (see gather_velocity).
+struct AllParticles {
+  bool operator()(uint32_t) const { return true; }
+};
+
+// Visits every particle q for which select(q) holds, block by block, with the grid velocity at it and the matrix
+// of APIC's C,
 //   f(q, v, B, div),   v = sum_i w_ip v_i,   B = sum_i w_ip v_i (x_i - x_p)^T / dx,
 // the nodes' velocities v_i being in g.momentum (after grid_update); div() returns div v(x_p), computed on demand.
 // Also used by transfer/flip.h.
-template <int dim, class F>
-void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, F&& f) {
+template <int dim, class F, class Select = AllParticles>
+void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins, F&& f, Select select = {}) {
   const size_t nb = bins.bin_count();
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t j = 0; j < nb; ++j) {
@@ -41,6 +47,7 @@ void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const Particle
     patch.for_each_node([&](int n, size_t k) { pv[n].template head<dim>() = g.momentum[k]; });
     for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
       const uint32_t q = bins.order[k];
+      if (!select(q)) continue;
       const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
       Vec<dim> v;
       Mat<dim> B;  // sum_i w_i v_i o_i^T; the node's offset from the particle is o_i - fx
@@ -53,19 +60,22 @@ void gather_velocity(const Particles<dim>& p, const Grid<dim>& g, const Particle
 }
 
 // `interpolated_divergence`: per material, whether tr C_p is the divergence of the interpolated velocity (above);
-// empty: none.
+// empty: none. `only`: per material, whether its particles read this grid (empty: all of them; the solids' own
+// field of sim/field_contact.h is read by its materials' particles alone).
 template <int dim>
 void g2p(Particles<dim>& p, const Grid<dim>& g, const ParticleBins& bins,
-         const std::vector<uint8_t>& interpolated_divergence = {}) {
+         const std::vector<uint8_t>& interpolated_divergence = {}, const std::vector<uint8_t>& only = {}) {
   const Real Dinv_dx = Real(4) * g.inv_dx;  // D^-1 * dx, since offsets are in units of dx
   const bool any = std::find(interpolated_divergence.begin(), interpolated_divergence.end(), 1) !=
                    interpolated_divergence.end();
-  gather_velocity(p, g, bins, [&](uint32_t q, const Vec<dim>& v, const Mat<dim>& B, const auto& div) {
+  const auto write = [&](uint32_t q, const Vec<dim>& v, const Mat<dim>& B, const auto& div) {
     p.v[q] = v;
     p.C[q] = Dinv_dx * B;
     if (any && interpolated_divergence[p.material[q]])
       p.C[q].diagonal().array() += (div() - p.C[q].trace()) / Real(dim);
-  });
+  };
+  if (only.empty()) gather_velocity(p, g, bins, write);
+  else gather_velocity(p, g, bins, write, [&](uint32_t q) { return only[p.material[q]] != 0; });
 }
 
 }  // namespace cdmpm

@@ -9,8 +9,10 @@
 // in its moving-least-squares form. With dt = 0 this is the pure APIC transfer, which conserves mass,
 // linear and angular momentum exactly.
 //
-// The particles of a rigid body in contact (rigid key `contact`) are left out: they scatter into their body's
-// own field (sim/rigid_contact.h).
+// Which particles scatter is the field's choice: the shared field takes every material without `contact`; the
+// solids' field (Field::solid) takes the deformable materials with `contact` (ice; sim/field_contact.h). The
+// particles of a rigid body in contact are in neither: they scatter into their body's own field
+// (sim/rigid_contact.h).
 //
 // Race-free and deterministic: blocks of one colour run in parallel, colours in sequence (particle_bins.h).
 // Each block's particles scatter into a dense patch that is then added to the sparse grid (block_patch.h).
@@ -28,17 +30,25 @@
 
 namespace cdmpm {
 
+// The velocity field a scatter fills (see the header).
+enum class Field : uint8_t { shared, solid };
+
+// Whether material m scatters into field f.
+inline bool scatters_into(const Material& m, Field f) {
+  return f == Field::shared ? !m.contact() : m.contact() && !m.traits().rigid;
+}
+
 // Scatters the particles of bin j into acc (zero on entry): the patch contribution of one block.
 template <int dim>
 void scatter_bin(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins,
-                 const Grid<dim>& g, uint32_t j, Real dt, PatchAccumulator<dim>& acc) {
+                 const Grid<dim>& g, uint32_t j, Real dt, PatchAccumulator<dim>& acc, Field field = Field::shared) {
   const Real Dinv = Real(4) * g.inv_dx * g.inv_dx;
   const BlockPatch<dim> patch(g, bins.blocks[j]);
-  std::array<uint8_t, 256> own_field{};  // per material id (uint8_t): a rigid body in contact, in its own field
-  for (size_t mi = 0; mi < materials.size() && mi < own_field.size(); ++mi) own_field[mi] = materials[mi].contact();
+  std::array<uint8_t, 256> in_field{};  // per material id (uint8_t): scatters into this field
+  for (size_t mi = 0; mi < materials.size() && mi < in_field.size(); ++mi) in_field[mi] = scatters_into(materials[mi], field);
   for (uint32_t k = bins.start[j]; k < bins.start[j + 1]; ++k) {
     const uint32_t q = bins.order[k];
-    if (own_field[p.material[q]]) continue;
+    if (!in_field[p.material[q]]) continue;
     const BSplineStencil<dim> s(p.x[q] * g.inv_dx);
     const Real m = p.mass[q];
     Mat<dim> affine = m * p.C[q];
@@ -67,14 +77,14 @@ void add_patch(Grid<dim>& g, uint32_t block, const PatchRecords<dim>& node) {
 // the contributions of colour c that other ranks computed, parallel/halo_exchange.h).
 template <int dim, class AfterColour>
 void p2g(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Grid<dim>& g,
-         Real dt, AfterColour&& after_colour) {
+         Real dt, AfterColour&& after_colour, Field field = Field::shared) {
   for (size_t c = 0; c < bins.colour_bins.size(); ++c) {
     const auto& colour = bins.colour_bins[c];
 #pragma omp parallel for schedule(dynamic, 4)
     for (size_t ci = 0; ci < colour.size(); ++ci) {
       const uint32_t j = colour[ci];
       PatchAccumulator<dim> acc;
-      scatter_bin(p, materials, bins, g, j, dt, acc);
+      scatter_bin(p, materials, bins, g, j, dt, acc, field);
       add_patch(g, bins.blocks[j], acc.node);
     }
     after_colour(static_cast<int>(c));
