@@ -133,8 +133,9 @@ class Loader {
         if (m.contact() && m.traits().rigid == rigid) return m.name;
       return std::string();
     };
-    if (const std::string ice = contact_of(false); !ice.empty() && !contact_of(true).empty())
-      r_.fail(ms[ice].child("contact"), "a rigid body in contact (materials." + contact_of(true) +
+    const std::string ice = contact_of(false), rigid = contact_of(true);
+    if (!ice.empty() && !rigid.empty())
+      r_.fail(ms[ice].child("contact"), "a rigid body in contact (materials." + rigid +
                                             ".contact) meets the shared field only (sim/rigid_contact.h), not the ice's own "
                                             "field; give \"contact\" to the rigid bodies or to the ice, not both");
   }

@@ -12,9 +12,9 @@
 //   v_s -= c_i lambda_i m_o / (m_s + m_o) n_i,   v_o += c_i lambda_i m_s / (m_s + m_o) n_i,
 // which conserves the node's momentum (m_s dv_s + m_o dv_o = 0). Nodes that separate keep their velocities. The
 // boundaries' conditions are applied again to both velocities afterwards. c_i is the node's share of the contact,
-// 0 to 1 as the solid's node mass goes from 0.05 to 0.2 of a full node's (rho dx^dim), as for the rigid bodies'
-// contact (sim/rigid_contact.h: a node the solid's kernel barely reaches would otherwise stop the water a cell
-// outside the surface). The solids' particles then read their own field (transfer/g2p.h, `only`).
+// 0 to 1 as the solid's node mass goes from 0.05 to 0.2 of a full node's (rho dx^dim): the rigid bodies' ramp
+// (RigidContact::share, sim/rigid_contact.h: a node the solid's kernel barely reaches would otherwise stop the
+// water a cell outside the surface). The solids' particles then read their own field (transfer/g2p.h, `only`).
 // Why: in the one shared field the nodes beside an elastic block carry both the block and the water that sinks
 // past it, and the block's shear passes that drag into the whole block: an elastic ice block of density 920
 // released in water rose at 69 % of the potential-flow acceleration at D/16 with J-bar and FLIP on the water
@@ -34,6 +34,7 @@
 #include "grid/grid_update.h"
 #include "grid/particle_bins.h"
 #include "material/material.h"
+#include "sim/rigid_contact.h"
 #include "transfer/g2p.h"
 #include "transfer/p2g.h"
 
@@ -42,27 +43,23 @@ namespace cdmpm {
 template <int dim>
 class FieldContact {
  public:
-  static constexpr Real share_start = Real(0.05);  // node mass / full node mass where the contact starts
-  static constexpr Real share_full = Real(0.2);    // ... and where it acts in full
-
-  // The materials that have the field (deformable, with `contact`); none: the class does nothing.
-  void configure(const std::vector<Material>& materials, Real dx) {
+  // The materials that have the field (deformable, with `contact`); none: the class does nothing. The field is
+  // a grid of the shared one's lattice.
+  void configure(const std::vector<Material>& materials, const Grid<dim>& shared) {
     in_field_.assign(materials.size(), 0);
     Real rho = 0;
     for (size_t mi = 0; mi < materials.size(); ++mi) {
       in_field_[mi] = scatters_into(materials[mi], Field::solid);
       if (in_field_[mi]) rho = rho == 0 ? materials[mi].density() : std::min(rho, materials[mi].density());
     }
-    full_node_mass_ = rho * std::pow(dx, dim);
+    full_node_mass_ = rho * std::pow(shared.dx, dim);
     any_ = std::find(in_field_.begin(), in_field_.end(), 1) != in_field_.end();
+    if (any_) field = shared;
   }
   bool any() const { return any_; }
 
-  // The field takes the shared grid's active blocks (the same lattice and slots), cleared.
-  void activate(const Grid<dim>& shared, const std::vector<uint32_t>& blocks) {
-    if (!sized_) field = shared, sized_ = true;
-    field.activate(blocks);
-  }
+  // The field takes the shared grid's active blocks (the same slots), cleared.
+  void activate(const std::vector<uint32_t>& blocks) { field.activate(blocks); }
 
   // The solids' mass, momentum and stress impulse (p2g into the field).
   void scatter(const Particles<dim>& p, const std::vector<Material>& materials, const ParticleBins& bins, Real dt) {
@@ -76,7 +73,7 @@ class FieldContact {
     field.for_each_node([&](size_t k, const IVec<dim>& i) {
       const Real ms = field.mass[k], mo = shared.mass[k];
       if (ms <= 0 || mo <= 0) return;
-      const Real c = std::clamp((ms / full_node_mass_ - share_start) / (share_full - share_start), Real(0), Real(1));
+      const Real c = RigidContact<dim>::share(ms / full_node_mass_);
       if (c == 0) return;
       Vec<dim> grad;
       for (int a = 0; a < dim; ++a) {
@@ -115,7 +112,7 @@ class FieldContact {
 
   std::vector<uint8_t> in_field_;  // per material: in the field
   Real full_node_mass_ = 1;
-  bool any_ = false, sized_ = false;
+  bool any_ = false;
 };
 
 }  // namespace cdmpm

@@ -139,6 +139,11 @@ class RigidContact {
   // cut at 0.1 gives the body an impulse each time a node crosses it as the body moves (its velocity jumps by up to
   // 60 % from one probe to the next once it has moved a quarter of a cell, D/32).
   static constexpr Real ramp_start = Real(0.05), ramp_end = Real(0.2);
+  // c_i for a node holding `fraction` of a deep node's body mass (also the deformable solids' share,
+  // sim/field_contact.h).
+  static Real share(Real fraction) {
+    return std::clamp((fraction - ramp_start) / (ramp_end - ramp_start), Real(0), Real(1));
+  }
 
   // The boundaries hold the bodies as a wall of this many times a node's body mass would (a stiff constraint in the
   // implicit system, so that the body does not drift into a wall that the water presses it against).
@@ -170,7 +175,7 @@ class RigidContact {
         rows.push_back({k, b, n, wall_weight * static_cast<double>(mass_[k]), 0.0, false, Real(1)});
       const Real len = gradient_[k].norm();
       if (g.mass[k] <= 0 || !(len > 0)) continue;
-      const Real share = std::clamp((mass_[k] / full[b] - ramp_start) / (ramp_end - ramp_start), Real(0), Real(1));
+      const Real share = RigidContact::share(mass_[k] / full[b]);
       if (!(share > 0)) continue;
       if (any_solid(bcs, x)) continue;
       const Vec<dim> n = -gradient_[k] / len;

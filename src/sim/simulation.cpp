@@ -59,7 +59,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
     contact_material_.push_back(m.contact() && m.traits().rigid);
     interpolated_divergence_.push_back(m.interpolated_divergence());
   }
-  solid_field_.configure(materials, grid.dx);
+  solid_field_.configure(materials, grid);
 #ifdef CDMPM_MPI
   // (A rigid body in contact beside it is refused by the scene loader.)
   if (domain_ && solid_field_.any())
@@ -280,7 +280,7 @@ void Simulation<dim>::bin() {
   bins_.build(particles, grid);
   if (bed_.empty()) {
     grid.activate(bins_.blocks);
-    if (solid_field_.any()) solid_field_.activate(grid, bins_.blocks);  // the same slots as the shared field
+    if (solid_field_.any()) solid_field_.activate(bins_.blocks);  // the same slots as the shared field
     return;
   }
   // The well-balanced bed: the blocks of the particles and of the bed layer.
@@ -288,7 +288,7 @@ void Simulation<dim>::bin() {
   std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
                  std::back_inserter(blocks_));
   grid.activate(blocks_);
-  if (solid_field_.any()) solid_field_.activate(grid, blocks_);
+  if (solid_field_.any()) solid_field_.activate(blocks_);
 }
 
 // The solids' own field (sim/field_contact.h) is folded and unfolded with the shared one, except for the FLIP

@@ -43,8 +43,8 @@ struct TwoFields {
     std::vector<uint32_t> all(shared.block_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = static_cast<uint32_t>(b);
     shared.activate(all);
-    contact.configure(scene.materials, shared.dx);
-    contact.activate(shared, all);
+    contact.configure(scene.materials, shared);
+    contact.activate(all);
     shared.for_each_node([&](size_t k, const IVec<2>& i) {
       const double x = i[0] * 0.1;
       const double fi = x < 0.35 ? 1 : x < 0.45 ? 1 : x < 0.55 ? 0.5 : x < 0.65 ? 0.1 : 0;
@@ -117,11 +117,7 @@ double ice_rise_acceleration(double dx) {
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();  // least squares for (y0, v0, a/2)
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   for (int k = 1; k <= 30; ++k) {
-    while (sim.time() < 0.01 * k - 1e-12) {
-      const double dt = std::min(static_cast<double>(sim.stable_dt()), 0.01 * k - sim.time());
-      if (dt < 0.01 * k - sim.time()) sim.step(static_cast<Real>(dt));
-      else sim.step_until(0.01 * k);
-    }
+    while (sim.time() < 0.01 * k - 1e-12) sim.step_until(std::min(0.01 * k, sim.time() + sim.stable_dt()));
     double m = 0, my = 0;
     for (size_t q = 0; q < sim.particles.size(); ++q)
       if (sim.particles.material[q] == ice) m += sim.particles.mass[q], my += sim.particles.mass[q] * sim.particles.x[q][1];
