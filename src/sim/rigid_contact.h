@@ -35,8 +35,11 @@
 // two thirds of the potential-flow acceleration (docs/validation.md, buoyancy). With the contact and XPIC(4) on the
 // water the block rises within 9 % at D/16. Known limits (docs/validation.md, "Session 24" and session 25): a
 // surfacing body keeps a film of water one cell deep on its top, which does not drain, so it floats that much too
-// deep; and once a body has moved half a cell from where its faces lay on grid planes, the shares above are those
-// of faces midway between them and the body the water sees is larger: the rise at D/32 stalls there (0.19 s).
+// deep; and the part of a face's water pressure that the shares pass to the body depends on where the face lies
+// between grid planes (0.755 to 0.995 of it, tools/contact_share_phi.py): over the second half of each cell a
+// rising body's bottom face passes less and its top face more, and the rise at D/32 stalls there (0.18-0.26 s).
+// Shares that pass the same part at every offset hold more water a cell out and rise slower (docs/validation.md,
+// "What the share passes of the pressure").
 // Sums over the contact nodes are exact (math/exact_sum.h), so they have the same bits for any order, thread
 // count and number of ranks; a distributed run adds its own nodes only (`owned`) and sums the accumulators
 // over the ranks, so every rank solves the same system; every rank holds every rigid particle (gathered in the
