@@ -35,6 +35,8 @@ struct TimeSpec {
   double max_dt = 0;          // optional upper bound on dt [s]; 0 = none
   double settle = 0;          // settling before t = 0 [s]: solids elastic, velocities damped (sim/simulation.h)
   double settle_damping = 0;  // damping rate of the settling [1/s]; default 10 / settle
+  bool multi_rate = false;    // the solids' own field (ice with "contact") sub-steps at its own stable time step
+                              // within each step of the others (sim/field_contact.h, subcycle)
 };
 
 struct BodySpec {

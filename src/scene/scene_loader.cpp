@@ -93,7 +93,7 @@ class Loader {
   }
 
   void time(const Node& t) {
-    r_.object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt", "settle", "settle_damping"});
+    r_.object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt", "settle", "settle_damping", "multi_rate"});
     TimeSpec& ts = s_.time;
     ts.end = r_.number(r_.required(t, "end"), gt(0));
     ts.frame_interval = r_.number(r_.required(t, "frame_interval"), {0, ts.end, true, false}, " (at most time.end)");
@@ -107,6 +107,8 @@ class Loader {
     } else if (ts.settle > 0) {
       ts.settle_damping = 10 / ts.settle;
     }
+    ts.multi_rate = r_.boolean(t, "multi_rate", false);
+    if (ts.multi_rate) multi_rate_path_ = t.child("multi_rate");
   }
 
   void materials(const Node& ms) {
@@ -138,6 +140,9 @@ class Loader {
       r_.fail(ms[ice].child("contact"), "a rigid body in contact (materials." + rigid +
                                             ".contact) meets the shared field only (sim/rigid_contact.h), not the ice's own "
                                             "field; give \"contact\" to the rigid bodies or to the ice, not both");
+    if (s_.time.multi_rate && ice.empty())
+      r_.fail(multi_rate_path_, "sub-steps the solids' own field, which no material has: give an ice material "
+                                "\"contact\": true, or remove \"multi_rate\"");
   }
 
   void body(const Node& b) {
@@ -337,6 +342,7 @@ class Loader {
   SceneReader r_;
   int dim_;
   Scene s_;
+  std::string multi_rate_path_;                              // time.multi_rate, when set
   Strings faces_closed_;                                     // by the boundaries read so far
   std::vector<std::pair<std::string, std::string>> faces_needed_;  // face, path of the key that names it
 };

@@ -60,6 +60,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
     interpolated_divergence_.push_back(m.interpolated_divergence());
   }
   solid_field_.configure(materials, grid);
+  multi_rate_ = s.time.multi_rate && solid_field_.any();
 #ifdef CDMPM_MPI
   // (A rigid body in contact beside it is refused by the scene loader.)
   if (domain_ && solid_field_.any())
@@ -181,6 +182,7 @@ void Simulation<dim>::step_until(double t) {
 // One step: the phases of sim/phases.h in order.
 template <int dim>
 void Simulation<dim>::advance(Real dt, double t_end) {
+  if (multi_rate_) return advance_multi_rate(dt, t_end);
   timer_.run(Phase::Bin, [&] { bin(); });
   if (any_flip_) timer_.run(Phase::FlipTransfer, [&] { flip_transfer(); });
   timer_.run(Phase::P2G, [&] {
@@ -217,6 +219,72 @@ void Simulation<dim>::advance(Real dt, double t_end) {
 #endif
     remove_sunk_particles(particles, sinks);
   });
+  timer_.run(Phase::Reductions, [&] { update_speeds(); });
+  ++steps_;
+}
+
+// One step with the solids' own field sub-stepped (time.multi_rate; sim/field_contact.h, subcycle): the phases of
+// advance() for the shared field and its particles, with the solids' field's n steps of dt / n between the shared
+// grid update and g2p. n is dt over the solids' own stable step (their wave speed; dt is the others'), rounded up.
+// The solids' particles are extracted for the sub-steps and their state is written back after the step's
+// advection (the shared field's g2p, constitutive update and advection pass over them and are overwritten), before
+// the crack-start record compares the damage with the step's start.
+template <int dim>
+void Simulation<dim>::advance_multi_rate(Real dt, double t_end) {
+  const Real solid_dt = stable_time_step(scene.time, grid.dx, max_speed, solid_wave_speed_, material_dt_);
+  const int n = std::max(1, static_cast<int>(std::ceil(dt / solid_dt * (1 - 1e-9))));
+  timer_.run(Phase::Bin, [&] { bin(); });
+  if (any_flip_) timer_.run(Phase::FlipTransfer, [&] { flip_transfer(); });
+  Particles<dim> solids;
+  timer_.run(Phase::P2G, [&] {
+    field_index_.clear();
+    const auto& in_field = solid_field_.in_field();
+    for (size_t q = 0; q < particles.solid_count(); ++q)
+      if (in_field[particles.material[q]]) field_index_.push_back(static_cast<uint32_t>(q));
+    solids = particles.extract(field_index_);
+    transfer_velocity();  // v0: the shared field's velocity at the start of the step
+    v0_.assign(grid.momentum.begin(), grid.momentum.end());
+    grid.clear();
+    if (any_j_bar_) {
+      cell_mean_J(particles, materials, grid, bins_, J_state_);
+      std::swap(particles.J, J_state_);
+    }
+    p2g_phase(dt);
+    if (any_j_bar_) std::swap(particles.J, J_state_);
+  });
+  timer_.run(Phase::BoundaryFold, [&] { boundary_fold(false); });
+  timer_.run(Phase::GridUpdate, [&] {
+    for (const auto& b : boundaries) {
+      b->move_to(time_);
+      b->prepare(*this, dt);
+    }
+    grid_update(grid, gravity, dt, boundaries);
+  });
+  timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(false); });
+  crack_starts.before_update(particles);
+  timer_.run(Phase::GridUpdate, [&] {
+    solid_field_.subcycle(solids, grid, v0_, n, dt, gravity, materials, rigid_material_, boundaries);
+  });
+  timer_.run(Phase::G2P, [&] {
+    g2p(particles, grid, bins_, interpolated_divergence_);
+    if (any_flip_) flip_blend(particles, materials, flip_u_);
+  });
+  timer_.run(Phase::ConstitutiveUpdate, [&] { constitutive_update(particles, materials, dt); });
+  timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
+  timer_.run(Phase::Advect, [&] {
+    advect_phase(dt);
+    for (size_t j = 0; j < field_index_.size(); ++j) {
+      const uint32_t q = field_index_[j];
+      particles.x[q] = solids.x[j];
+      particles.v[q] = solids.v[j];
+      particles.C[q] = solids.C[j];
+      particles.J[q] = solids.J[j];
+      particles.F[q] = solids.F[j];
+      particles.alpha[q] = solids.alpha[j];
+    }
+  });
+  crack_starts.after_update(particles, materials, steps_ + 1, t_end);
+  timer_.run(Phase::Sinks, [&] { remove_sunk_particles(particles, sinks); });  // one process only (field contact)
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
 }
@@ -374,8 +442,12 @@ void Simulation<dim>::update_speeds() {
   global::max(stiffest);
   max_speed = std::sqrt(static_cast<Real>(global::max(vmax2)));
   max_wave_speed = 0;
-  for (size_t mi = 0; mi < nm; ++mi)
-    if (stiffest[mi] > 0) max_wave_speed = std::max(max_wave_speed, wave_speed_at_stiffening<dim>(materials[mi], stiffest[mi]));
+  solid_wave_speed_ = 0;
+  for (size_t mi = 0; mi < nm; ++mi) {
+    if (!(stiffest[mi] > 0)) continue;
+    Real& c = multi_rate_ && solid_field_.in_field()[mi] ? solid_wave_speed_ : max_wave_speed;
+    c = std::max(c, wave_speed_at_stiffening<dim>(materials[mi], stiffest[mi]));
+  }
 }
 
 template <int dim>

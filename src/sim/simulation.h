@@ -9,7 +9,8 @@
 // the shared field, folded, updated and unfolded with it, in contact with it after both grid updates, read back
 // after the shared g2p); rigid bodies with `contact` have their bodies' field (sim/rigid_contact.h).
 // The time step is dt = min(cfl dx / max|v_p|, wave_cfl dx / c_max, wave_cfl * the materials' own limits
-// (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h).
+// (viscosity), max_dt), where c_max is the largest wave speed of any material present (sim/time_step.h); with
+// time.multi_rate, of any material outside the solids' own field, which sub-steps at its own (advance_multi_rate).
 // The simulation owns its clock: step(dt) advances it by dt, step_until(t) lands it exactly on t (an output
 // time).
 // Settling (scene time.settle > 0): before t = 0 the scene is stepped for time.settle seconds
@@ -57,6 +58,15 @@ class Simulation {
   void step(Real dt);
   // Advances the state by one step that ends exactly at time t (t > time).
   void step_until(double t);
+  // Advances the state to exactly time t with stable steps, the last one shortened to land on t (a remainder
+  // within 1e-9 of a step is merged into it). Tests and tools that need no output between steps use it.
+  void run_until(double t) {
+    while (time_ < t) {
+      const Real dt = stable_dt();
+      if (time_ + double(dt) * (1 + 1e-9) >= t) step_until(t);
+      else step(dt);
+    }
+  }
   // Checks the state after a step; returns a message saying where and why if it is unstable.
   std::optional<std::string> check_state() const;
   // Sets the clock and the time-step reference of a run resumed from a checkpoint (whose particles were loaded
@@ -98,6 +108,7 @@ class Simulation {
 
  private:
   void advance(Real dt, double t_end);
+  void advance_multi_rate(Real dt, double t_end);
   // The phases (sim/phases.h).
   void bin();
   void p2g_phase(Real dt);
@@ -126,6 +137,10 @@ class Simulation {
   BedLayer<dim> bed_;              // fixed water particles in the well-balanced beds (sim/bed_layer.h)
   std::vector<uint32_t> blocks_;   // the blocks of the particles and of the bed layer
   bool any_flip_ = false, any_j_bar_ = false;  // some material has a FLIP share, J-bar (material/water.h)
+  bool multi_rate_ = false;        // time.multi_rate: the solids' field sub-steps (advance_multi_rate)
+  Real solid_wave_speed_ = 0;      // multi-rate: the largest wave speed of the solids' field (max_wave_speed: the others')
+  std::vector<uint32_t> field_index_;  // multi-rate: the particles of the solids' field, ascending
+  std::vector<Vec<dim>> v0_;       // multi-rate: the shared field's velocity at the start of the step
   std::vector<Vec<dim>> flip_u_;   // per particle: its velocity the grid did not see (transfer/flip.h)
   int xpic_order_ = 0;             // the largest XPIC order of the materials (transfer/flip.h)
   XpicScratch<dim> xpic_;          // the XPIC recurrence's work arrays (transfer/flip.h)

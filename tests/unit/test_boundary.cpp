@@ -111,7 +111,7 @@ TEST(BoxObstacle, StillWaterBesideASlipBoxIsAsHydrostaticAsBesideAWall) {
       {"output", {{"frames", false}}}};
   const Scene scene = scene_from_json(j, "pool.json");
   Simulation<2> sim(scene);
-  while (sim.time() < scene.time.end) sim.step(sim.stable_dt());
+  sim.run_until(scene.time.end);
   const double rho_g_h = 1000 * 9.81 * 40;
   // Mean deviation from hydrostatic of the three particle columns next to each side (depth 5..38 m).
   double box[3] = {0, 0, 0}, wall[3] = {0, 0, 0};

@@ -200,7 +200,7 @@ TEST(CrackStartsBar, BarPulledInTensionRecordsTension) {
   const Scene scene = load_scene(testing::source_path("scenes/ice_bar_2d.json"),
                                  {set_value("parameters.strain_rate", rate), set_value("parameters.end", end), "output.frames=false"});
   Simulation<2> sim(scene);
-  while (sim.time() < end) sim.step(std::min<Real>(sim.stable_dt(), static_cast<Real>(end - sim.time())));
+  sim.run_until(end);
   const auto& events = sim.crack_starts.events();
   ASSERT_FALSE(events.empty()) << "the bar did not break";
   // The record fills with the first crossings, 1.0-1.6 m from the middle (t = 1.2-1.5 ms, after the peak at

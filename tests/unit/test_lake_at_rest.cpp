@@ -55,7 +55,7 @@ LakeResult run_lake(const std::string& scene_file, const std::vector<std::string
   omp_set_num_threads(1);
   const Scene scene = load_scene(source_path(scene_file), sets);
   Simulation<dim> sim(scene);
-  while (sim.time() < scene.time.end - 1e-9) sim.step_until(std::min(scene.time.end, sim.time() + sim.stable_dt()));
+  sim.run_until(scene.time.end);
   LakeResult r;
   const double dx = sim.grid.dx, spacing = dx / 2;
   std::map<std::vector<int>, std::array<double, 3>> bins;  // sum of p, sum of rho g d, count

@@ -56,10 +56,7 @@ json block_scene(int dim, const std::vector<double>& lo, const std::vector<doubl
 
 template <int dim>
 void run_until(Simulation<dim>& sim, double t_end) {
-  while (sim.time() < t_end - 1e-12) {
-    const Real dt = std::min<Real>(sim.stable_dt(), static_cast<Real>(t_end - sim.time()));
-    sim.step(dt);  // advances sim.time()
-  }
+  sim.run_until(t_end);
 }
 
 template <int dim>

@@ -35,7 +35,7 @@ nlohmann::json pool(bool with_sink) {
 double run_and_measure_level(bool with_sink) {
   const Scene scene = scene_from_json(pool(with_sink), "pool.json");
   Simulation<2> sim(scene);
-  while (sim.time() < scene.time.end) sim.step(std::min<double>(sim.stable_dt(), scene.time.end - sim.time()));
+  sim.run_until(scene.time.end);
   double volume = 0;
   for (size_t q = 0; q < sim.particles.size(); ++q) volume += reference_volume(sim.materials[sim.particles.material[q]], sim.particles.mass[q]) * sim.particles.J[q];
   return volume / (kLength - 10 - kTravel);
