@@ -8,6 +8,7 @@
 // Every probe may be restricted to one material ("material"); wave gauges default to the fluids.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,9 @@
 #include "sim/simulation.h"
 
 namespace cdmpm {
+
+// A probe's value where it measures nothing (a dry gauge, a section without water): written as nan.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 template <int dim>
 class Probe {

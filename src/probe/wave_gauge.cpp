@@ -12,8 +12,6 @@
 namespace cdmpm {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 template <int dim>
 class WaveGauge final : public Probe<dim> {
  public:
