@@ -64,6 +64,22 @@ struct Particles {
     for (const uint32_t q : indices) out.add_copy(*this, q);
     return out;
   }
+  // Writes the state of a batch from extract(indices) back to the particles it was copied from (the batch in the
+  // same order; multi-rate stepping, sim/simulation.cpp).
+  void write_back(const std::vector<uint32_t>& indices, const Particles& batch) {
+    for (size_t j = 0; j < indices.size(); ++j) {
+      const uint32_t q = indices[j];
+      x[q] = batch.x[j];
+      v[q] = batch.v[j];
+      C[q] = batch.C[j];
+      mass[q] = batch.mass[j];
+      J[q] = batch.J[j];
+      if (q < solid_count()) {
+        F[q] = batch.F[j];
+        alpha[q] = batch.alpha[j];
+      }
+    }
+  }
   // Adds a batch (from extract), keeping its ids: its solids after this set's solids, its fluids at the end.
   void append(const Particles& batch) {
     for (size_t q = 0; q < batch.size(); ++q) add_copy(batch, q);

@@ -185,17 +185,9 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   if (multi_rate_) return advance_multi_rate(dt, t_end);
   timer_.run(Phase::Bin, [&] { bin(); });
   if (any_flip_) timer_.run(Phase::FlipTransfer, [&] { flip_transfer(); });
-  timer_.run(Phase::P2G, [&] {
-    if (any_j_bar_) {  // the stress at the cell-mean J (material/j_bar.h), the particles' own J kept
-      cell_mean_J(particles, materials, grid, bins_, J_state_);
-      std::swap(particles.J, J_state_);
-    }
-    p2g_phase(dt);
-    if (solid_field_.any()) solid_field_.scatter(particles, materials, bins_, dt);
-    if (any_j_bar_) std::swap(particles.J, J_state_);
-  });
+  timer_.run(Phase::P2G, [&] { p2g_phase(dt, true); });
   timer_.run(Phase::BoundaryFold, [&] { boundary_fold(); });
-  timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt); });
+  timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt, true); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(); });
   timer_.run(Phase::G2P, [&] {
     g2p(particles, grid, bins_, interpolated_divergence_);
@@ -209,16 +201,7 @@ void Simulation<dim>::advance(Real dt, double t_end) {
   });
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] { advect_phase(dt); });
-  timer_.run(Phase::Sinks, [&] {
-#ifdef CDMPM_MPI
-    if (domain_) {
-      std::vector<uint32_t> kept;
-      if (remove_sunk_particles(particles, sinks, &kept)) domain_->removed(kept);
-      return domain_->migrate_particles(particles, grid);
-    }
-#endif
-    remove_sunk_particles(particles, sinks);
-  });
+  timer_.run(Phase::Sinks, [&] { sinks_phase(); });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
 }
@@ -245,21 +228,10 @@ void Simulation<dim>::advance_multi_rate(Real dt, double t_end) {
     transfer_velocity();  // v0: the shared field's velocity at the start of the step
     v0_.assign(grid.momentum.begin(), grid.momentum.end());
     grid.clear();
-    if (any_j_bar_) {
-      cell_mean_J(particles, materials, grid, bins_, J_state_);
-      std::swap(particles.J, J_state_);
-    }
-    p2g_phase(dt);
-    if (any_j_bar_) std::swap(particles.J, J_state_);
+    p2g_phase(dt, false);
   });
   timer_.run(Phase::BoundaryFold, [&] { boundary_fold(false); });
-  timer_.run(Phase::GridUpdate, [&] {
-    for (const auto& b : boundaries) {
-      b->move_to(time_);
-      b->prepare(*this, dt);
-    }
-    grid_update(grid, gravity, dt, boundaries);
-  });
+  timer_.run(Phase::GridUpdate, [&] { grid_update_phase(dt, false); });
   timer_.run(Phase::BoundaryUnfold, [&] { boundary_unfold(false); });
   crack_starts.before_update(particles);
   timer_.run(Phase::GridUpdate, [&] {
@@ -273,25 +245,31 @@ void Simulation<dim>::advance_multi_rate(Real dt, double t_end) {
   timer_.run(Phase::RigidProjection, [&] { rigid_projection(dt); });
   timer_.run(Phase::Advect, [&] {
     advect_phase(dt);
-    for (size_t j = 0; j < field_index_.size(); ++j) {
-      const uint32_t q = field_index_[j];
-      particles.x[q] = solids.x[j];
-      particles.v[q] = solids.v[j];
-      particles.C[q] = solids.C[j];
-      particles.J[q] = solids.J[j];
-      particles.F[q] = solids.F[j];
-      particles.alpha[q] = solids.alpha[j];
-    }
+    particles.write_back(field_index_, solids);
   });
   crack_starts.after_update(particles, materials, steps_ + 1, t_end);
-  timer_.run(Phase::Sinks, [&] { remove_sunk_particles(particles, sinks); });  // one process only (field contact)
+  timer_.run(Phase::Sinks, [&] { sinks_phase(); });
   timer_.run(Phase::Reductions, [&] { update_speeds(); });
   ++steps_;
 }
 
+// The step's p2g: each particle's mass, momentum and stress impulse to the shared field (scatter below), a J-bar
+// material's stress taken at its cell's mean J (material/j_bar.h) with the particles' own J kept, and the solids'
+// own field filled with its particles when it steps with the others (solid_field; multi-rate fills it per sub-step).
+template <int dim>
+void Simulation<dim>::p2g_phase(Real dt, bool solid_field) {
+  if (any_j_bar_) {
+    cell_mean_J(particles, materials, grid, bins_, J_state_);
+    std::swap(particles.J, J_state_);
+  }
+  scatter(dt);
+  if (solid_field && solid_field_.any()) solid_field_.scatter(particles, materials, bins_, dt);
+  if (any_j_bar_) std::swap(particles.J, J_state_);
+}
+
 // Mass, momentum and the stress impulse to the grid (transfer/p2g.h), the bed layer's too.
 template <int dim>
-void Simulation<dim>::p2g_phase(Real dt) {
+void Simulation<dim>::scatter(Real dt) {
 #ifdef CDMPM_MPI
   if (domain_) return domain_->p2g(particles, materials, bins_, grid, dt);  // the bed layer's too, as below
 #endif
@@ -324,7 +302,7 @@ void Simulation<dim>::flip_transfer() {
 // boundary condition), their unfold.
 template <int dim>
 void Simulation<dim>::transfer_velocity() {
-  p2g_phase(Real(0));
+  scatter(Real(0));
   boundary_fold(false);
   grid_update<dim>(grid, Vec<dim>::Zero(), Real(0), {});
   boundary_unfold(false);
@@ -348,7 +326,7 @@ void Simulation<dim>::bin() {
   bins_.build(particles, grid);
   if (bed_.empty()) {
     grid.activate(bins_.blocks);
-    if (solid_field_.any()) solid_field_.activate(bins_.blocks);  // the same slots as the shared field
+    if (solid_field_.any() && !multi_rate_) solid_field_.activate(bins_.blocks);  // the same slots as the shared field
     return;
   }
   // The well-balanced bed: the blocks of the particles and of the bed layer.
@@ -356,7 +334,7 @@ void Simulation<dim>::bin() {
   std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
                  std::back_inserter(blocks_));
   grid.activate(blocks_);
-  if (solid_field_.any()) solid_field_.activate(blocks_);
+  if (solid_field_.any() && !multi_rate_) solid_field_.activate(blocks_);  // multi-rate: each sub-step activates its own
 }
 
 // The solids' own field (sim/field_contact.h) is folded and unfolded with the shared one, except for the FLIP
@@ -368,15 +346,17 @@ void Simulation<dim>::boundary_fold(bool solid_field) {
     for (const auto& b : boundaries) b->fold_ghosts(solid_field_.field);
 }
 
-// Moving obstacles take their position at the start of the step, then the grid velocities are updated.
+// Moving obstacles take their position at the start of the step, then the grid velocities are updated: the shared
+// field's, the solids' own field's with its contact when it steps with the others (solid_field), and the rigid
+// bodies' contact.
 template <int dim>
-void Simulation<dim>::grid_update_phase(Real dt) {
+void Simulation<dim>::grid_update_phase(Real dt, bool solid_field) {
   for (const auto& b : boundaries) {
     b->move_to(time_);
     b->prepare(*this, dt);
   }
   grid_update(grid, gravity, dt, boundaries);
-  if (solid_field_.any()) solid_field_.update(grid, gravity, dt, boundaries);  // and its contact with the shared field
+  if (solid_field && solid_field_.any()) solid_field_.update(grid, gravity, dt, boundaries);
   if (!rigid.any_contact()) return;
   // The rigid bodies' contact with the other materials (sim/rigid_contact.h); a distributed run sums its own nodes.
   std::function<bool(size_t)> owned = [](size_t) { return true; };
@@ -411,6 +391,19 @@ void Simulation<dim>::rigid_projection(Real dt) {
   if (domain_) return rigid.project(particles, time_, dt, grid.dx, &domain_->keys());
 #endif
   rigid.project(particles, time_, dt, grid.dx);
+}
+
+// Particles inside a sink are removed; a distributed run then sends particles to the ranks that own their blocks.
+template <int dim>
+void Simulation<dim>::sinks_phase() {
+#ifdef CDMPM_MPI
+  if (domain_) {
+    std::vector<uint32_t> kept;
+    if (remove_sunk_particles(particles, sinks, &kept)) domain_->removed(kept);
+    return domain_->migrate_particles(particles, grid);
+  }
+#endif
+  remove_sunk_particles(particles, sinks);
 }
 
 // Free particles move with their velocity, rigid ones with their body; all are then kept inside the walls.

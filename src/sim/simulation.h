@@ -111,14 +111,16 @@ class Simulation {
   void advance_multi_rate(Real dt, double t_end);
   // The phases (sim/phases.h).
   void bin();
-  void p2g_phase(Real dt);
   void flip_transfer();
+  void p2g_phase(Real dt, bool solid_field);
+  void scatter(Real dt);
   void transfer_velocity();
   void boundary_fold(bool solid_field = true);
-  void grid_update_phase(Real dt);
+  void grid_update_phase(Real dt, bool solid_field);
   void boundary_unfold(bool solid_field = true);
   void rigid_projection(Real dt);
   void advect_phase(Real dt);
+  void sinks_phase();
   void update_speeds();
   void settle_elastically(double duration, Real damping);
 #ifdef CDMPM_MPI

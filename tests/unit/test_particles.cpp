@@ -36,6 +36,38 @@ TEST(Particles, ExtractAndAppendMoveParticlesWithTheirIdsAndState) {
   EXPECT_EQ(b.alpha, (std::vector<Real>{-10, -2, -3}));
 }
 
+TEST(Particles, WriteBackReturnsAnExtractedBatchsStateToItsParticles) {
+  // Multi-rate stepping extracts the solids of the solids' own field, steps them and writes them back.
+  Particles<2> a;
+  for (Real k : {1, 2, 3}) a.add_solid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 1, Mat<2>::Zero(), diag(k), -k);
+  for (Real k : {4, 5}) a.add_fluid(Vec<2>::Constant(k), Vec<2>::Zero(), k, 1, 0);
+  const std::vector<uint32_t> index = {0, 2, 3};
+  Particles<2> batch = a.extract(index);
+  for (size_t j = 0; j < batch.size(); ++j) {  // a new state: everything times 10
+    batch.x[j] *= 10;
+    batch.v[j] = Vec<2>::Constant(10 * batch.mass[j]);
+    batch.C[j] = diag(10 * batch.mass[j]);
+    batch.J[j] = 10 * batch.mass[j];
+  }
+  for (size_t j = 0; j < batch.solid_count(); ++j) {
+    batch.F[j] *= 10;
+    batch.alpha[j] *= 10;
+  }
+  a.write_back(index, batch);
+  for (size_t q = 0; q < a.size(); ++q) {
+    const Real k = a.mass[q], f = (q == 1 || q == 4) ? 1 : 10;  // particles 1 and 4 were not in the batch
+    EXPECT_EQ(a.x[q], Vec<2>::Constant(f * k)) << q;
+    EXPECT_EQ(a.v[q], Vec<2>::Constant(f == 10 ? 10 * k : 0)) << q;
+    EXPECT_EQ(a.C[q], f == 10 ? diag(10 * k) : Mat<2>::Zero()) << q;
+    EXPECT_EQ(a.J[q], f == 10 ? 10 * k : 1) << q;
+    if (q < a.solid_count()) {
+      EXPECT_EQ(a.F[q], diag(f * k)) << q;
+      EXPECT_EQ(a.alpha[q], -f * k) << q;
+    }
+  }
+  EXPECT_EQ(a.id, (std::vector<uint64_t>{0, 1, 2, 3, 4}));
+}
+
 TEST(Particles, SolidsFirstAndPermuteCarriesTheSolidState) {
   // Particles are told apart by their mass k; solid k has F = k I and alpha = -k.
   Particles<2> p;
