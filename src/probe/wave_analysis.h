@@ -9,7 +9,8 @@
 // parabola through it and its two neighbours. The amplitude is the crest's elevation and the arrival time the
 // crest's time. Noise ahead of the wave (surface-particle jitter of a fraction of the particle spacing) and
 // wiggles smaller than eta_th / 2 do not move it, nor do later, higher waves (reflections); a record that never
-// rises above zero has no crest.
+// rises above zero has no crest, nor has one whose largest sample of the leading wave is its last (finite) sample:
+// the record ends before the crest has passed (a run stopped while the wave is still rising at the gauge).
 // Celerity between two gauges: c = (x_2 - x_1) / (t_2 - t_1) of their crests; the run's celerity is the
 // least-squares slope of x against arrival time over all gauges with a crest.
 #pragma once
@@ -41,6 +42,9 @@ inline std::optional<Crest> first_crest(const std::vector<double>& t, const std:
     if (eta[i] > eta[best]) best = i;
     if (eta[i] < eta[best] - 0.5 * threshold) break;
   }
+  size_t next = best + 1;  // the crest must be followed by a sample of the record
+  while (next < eta.size() && !std::isfinite(eta[next])) ++next;
+  if (next >= eta.size()) return std::nullopt;
   Crest c{eta[best], t[best]};
   if (best > 0 && best + 1 < eta.size() && std::isfinite(eta[best - 1]) && std::isfinite(eta[best + 1])) {
     // Vertex of the parabola through the crest sample and its two neighbours (Newton form).

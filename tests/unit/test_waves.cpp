@@ -74,6 +74,28 @@ TEST(WaveAnalysis, FlatOrMissingRecordHasNoCrest) {
   EXPECT_FALSE(first_crest(t, missing));
 }
 
+TEST(WaveAnalysis, RecordThatEndsBeforeTheCrestHasPassedHasNoCrest) {
+  // The run stops while the wave is still rising at the gauge (its crest at 2 s, the record to 1.5 s): the
+  // record's last sample is its highest, not a crest. The same wave recorded past its crest has one.
+  std::vector<double> t, eta;
+  for (int i = 0; i <= 150; ++i) {
+    t.push_back(0.01 * i);
+    eta.push_back(crest(t.back(), 0.05, 2.0, 0.3));
+  }
+  EXPECT_FALSE(first_crest(t, eta));
+  eta.push_back(NAN);  // a dry gauge after it does not make it a crest either
+  t.push_back(1.51);
+  EXPECT_FALSE(first_crest(t, eta));
+  for (int i = 152; i <= 300; ++i) {
+    t.push_back(0.01 * i);
+    eta.push_back(crest(t.back(), 0.05, 2.0, 0.3));
+  }
+  const auto c = first_crest(t, eta);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->time, 2.0, 1e-3);
+  EXPECT_NEAR(c->amplitude, 0.05, 1e-5);
+}
+
 TEST(WaveAnalysis, CelerityIsTheLeastSquaresSlope) {
   // Crests at x = 2, 4, 6, 10 m passing at 3.2 m/s from t = 0.4 s, one time off by +0.01 s.
   const std::vector<double> x = {2, 4, 6, 10};
