@@ -324,17 +324,16 @@ void Simulation<dim>::bin() {
     particles.permute(std::move(bins_.order));  // the bins are rebuilt next
   }
   bins_.build(particles, grid);
-  if (bed_.empty()) {
-    grid.activate(bins_.blocks);
-    if (solid_field_.any() && !multi_rate_) solid_field_.activate(bins_.blocks);  // the same slots as the shared field
-    return;
+  const std::vector<uint32_t>* blocks = &bins_.blocks;
+  if (!bed_.empty()) {  // the well-balanced bed: the blocks of the particles and of the bed layer
+    blocks_.clear();
+    std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
+                   std::back_inserter(blocks_));
+    blocks = &blocks_;
   }
-  // The well-balanced bed: the blocks of the particles and of the bed layer.
-  blocks_.clear();
-  std::set_union(bins_.blocks.begin(), bins_.blocks.end(), bed_.bins.blocks.begin(), bed_.bins.blocks.end(),
-                 std::back_inserter(blocks_));
-  grid.activate(blocks_);
-  if (solid_field_.any() && !multi_rate_) solid_field_.activate(blocks_);  // multi-rate: each sub-step activates its own
+  grid.activate(*blocks);
+  // The solids' own field in the same slots as the shared field; under multi-rate each sub-step activates its own.
+  if (solid_field_.any() && !multi_rate_) solid_field_.activate(*blocks);
 }
 
 // The solids' own field (sim/field_contact.h) is folded and unfolded with the shared one, except for the FLIP
