@@ -83,6 +83,7 @@ TEST(LabWaves, CoarseMechanismsConserveWaterAndFallMakesTheLargestWave) {
 
 // The capsizing block (hinge, tilt) resumed at half time and on two threads gives the same state bit for bit.
 TEST(LabWaves, RigidResumeAndThreadCountGiveBitwiseIdenticalState) {
+  SKIP_IN_MPI_BUILD_LAYOUT();
   TempDir dir;
   const std::string scene = source_path("scenes/lab_cs_2d.json");
   const std::vector<std::string> common = {"--quiet", "--set", "parameters.cells_per_h=10", "--set",
