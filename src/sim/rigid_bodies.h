@@ -124,6 +124,14 @@ struct RigidAlgebra {
     if constexpr (dim == 2) return Spin(C(1, 0) - C(0, 1));
     else return Spin(C(2, 1) - C(1, 2), C(0, 2) - C(2, 0), C(1, 0) - C(0, 1));
   }
+  // The spin I^-1 L for the (symmetric positive-definite) inertia I and angular momentum L. In 2D I is 1 x 1 and
+  // this is the quotient, the bits of Eigen's LDLT of a 1 x 1 matrix, whose pivoting code GCC 12 flags with
+  // -Warray-bounds for that size.
+  template <class I, class L>
+  static L solve_spin(const I& inertia, const L& momentum) {
+    if constexpr (dim == 2) return L(momentum[0] / inertia(0, 0));
+    else return inertia.ldlt().solve(momentum);
+  }
   // Inertia of mass m at offset r from the axis point, plus its APIC self-inertia 2 m D.
   static Inertia inertia(Real m, const Vec<dim>& r, Real D) {
     if constexpr (dim == 2) return Inertia(m * (r.squaredNorm() + 2 * D));
@@ -223,7 +231,7 @@ class RigidBodies {
         B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
         continue;
       }
-      const DSpin omega = I[b].ldlt().solve(L[b]);
+      const DSpin omega = A::solve_spin(I[b], L[b]);
       B.omega = omega.template cast<Real>();
       if (B.hinged) {
         B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);
@@ -286,7 +294,8 @@ class RigidBodies {
         else S.s_star[dim + 1] = -rate;
       } else if (B.hinged) {  // gravity's torque about the hinge
         const Spin torque = A::cross(S.centre - B.pivot, static_cast<Real>(S.mass) * gravity);
-        S.s_star.template tail<rot_dofs>() += static_cast<double>(dt) * S.inertia.ldlt().solve(torque.template cast<double>());
+        S.s_star.template tail<rot_dofs>() +=
+            static_cast<double>(dt) * A::solve_spin(S.inertia, DSpin(torque.template cast<double>()));
       } else {
         S.s_star.template head<dim>() = (B.velocity + dt * gravity).template cast<double>();
       }

@@ -128,7 +128,7 @@ class BodySeeder {
       for (k[up] = lo_[up]; k[up] <= hi_[up]; ++k[up]) {
         DVec<dim> x;
         for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h_;
-        Vec<dim> n;
+        Vec<dim> n = Vec<dim>::Zero();  // set by filled() for the bed layer
         const Fill f = filled(x, n);
         if (f == Fill::Material) column.push_back(x);
         if (f == Fill::BedLayer && fills_bed) {

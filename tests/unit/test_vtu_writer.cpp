@@ -40,8 +40,6 @@ class VtuWriterTest : public ::testing::Test {
   fs::path dir;
 };
 
-}  // namespace
-
 TEST_F(VtuWriterTest, RoundTripsPointsAndFields) {
   const std::vector<double> points = {0.1, 0.2, 0.0, -1.5, 2.25, 0.0, 1e300, -3.0, 1.0 / 3.0};
   std::vector<VtuField> fields(3);
@@ -159,8 +157,6 @@ TEST_F(VtuWriterTest, NonexistentDirectoryThrowsAndLeavesNoFile) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-namespace {
-
 // Bit-for-bit equality (NaN and -0 included).
 template <class T>
 bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
@@ -217,8 +213,6 @@ uint64_t u64_at(const ParsedVtu& vtu, const std::string& name, size_t i) {
   std::memcpy(&v, vtu.text.data() + vtu.data_start + std::stoull(vtu.attr(name, "offset")) + 8 * i, 8);
   return v;
 }
-
-}  // namespace
 
 TEST_F(VtuWriterTest, CompressedAndUncompressedRoundTripBitForBit) {
   const Frame f(1000);
@@ -321,3 +315,5 @@ TEST_F(VtuWriterTest, RejectsBadOptions) {
   EXPECT_THROW(write_vtu((dir / "bad.vtu").string(), f.points, {two}, {}), std::invalid_argument);
   EXPECT_TRUE(fs::is_empty(dir));
 }
+
+}  // namespace (the fixture and the tests: file-local, also when the unity build joins files)
