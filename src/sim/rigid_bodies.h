@@ -325,7 +325,7 @@ class RigidBodies {
         if (B.motion.empty()) {  // driven: omega is the motion's (set again by the next projection)
           const typename A::Spin L = B.inertia * B.omega;
           B.inertia = R[b] * B.inertia * R[b].transpose();
-          B.omega = B.inertia.ldlt().solve(L);
+          B.omega = A::solve_spin(B.inertia, L);
         }
       }
       if (B.hinged) B.velocity = A::spin_cross(B.omega, B.centre - B.pivot);

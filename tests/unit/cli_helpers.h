@@ -27,9 +27,10 @@ struct CliResult {
   std::string output;  // stdout and stderr
 };
 
-// For a test that reads the one-process output layout (a frame as particles_NNNN.vtu, the checkpoint's index
-// naming its pieces): a program built with MPI writes per-rank pieces even as one process (particles_NNNN.pvtu with
-// particles_NNNN_r0.vtu, checkpoint_a_r0.bin; docs/architecture.md), which the tests labelled mpi check instead.
+// Placed before a test's checks of the one-process output layout (a frame as particles_NNNN.vtu, the checkpoint's
+// index naming its pieces), so that the checks above it run in both builds: a program built with MPI writes per-rank
+// pieces even as one process (particles_NNNN.pvtu with particles_NNNN_r0.vtu, checkpoint_a_r0.bin;
+// docs/architecture.md), which the tests labelled mpi check instead.
 #ifdef CDMPM_MPI
 #define SKIP_IN_MPI_BUILD_LAYOUT() \
   GTEST_SKIP() << "reads the one-process output layout; a program built with MPI writes per-rank pieces (tests labelled mpi)"
