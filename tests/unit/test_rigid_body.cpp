@@ -4,8 +4,9 @@
 // and falling freely where the plane is bounded away (half-plane `within`), a held block at rest until its release, a block lighter than
 // water floating at the draft of Archimedes' principle, and the initial rise of a submerged block against potential
 // flow, a = (rho_w - rho_b) V g / (m + m_a), m_a = C_A rho_w pi (D/2)^2, C_A = 1.51 for a square (DNV-RP-C205
-// table A-1; Brennen 1982: m_a = 4.754 rho_w (D/2)^2): closer under refinement. Issue 20's criteria, not met yet
-// (docs/validation.md, buoyancy), are disabled tests: 15 % at D/16, and floating at the draft after rising.
+// table A-1; Brennen 1982: m_a = 4.754 rho_w (D/2)^2), rho_w the water's density at the block (rise_reference.h):
+// closer under refinement. Issue 20's criteria, not met yet (docs/validation.md, buoyancy), are disabled tests:
+// 15 % at D/16, a neutrally buoyant block at rest, and floating at the draft after rising.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <string>
 
 #include "cli_helpers.h"
+#include "rise_reference.h"
 #include "scene/scene_loader.h"
 #include "sim/simulation.h"
 
@@ -381,11 +383,9 @@ double rise_acceleration(double dx, std::vector<std::string> sets = {}) {
   }
   return (n * stv - st * sv) / (n * stt - st * st);
 }
-// Potential flow: a = (rho_w - rho_b) V g / (rho_b V + C_A rho_w pi (D/2)^2) = 0.373 m/s^2.
-double potential_flow_rise() {
-  const double D = 0.4, V = D * D, rho_w = 1000, rho_b = 920, C_A = 1.51;
-  return (rho_w - rho_b) * V * g / (rho_b * V + C_A * rho_w * std::numbers::pi * D * D / 4);
-}
+// Potential flow for the scene's block, density 920, in its water (K = 1e6 Pa) at 1 m depth, density 1009.6:
+// 0.415 m/s^2 (rise_reference.h).
+double potential_flow_rise() { return testing::potential_flow_rise(920, 1e6); }
 
 // The initial rise approaches potential flow under refinement: closer at D/16 than at D/8, and upwards.
 TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
@@ -399,26 +399,50 @@ TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
 // Issue 20's criterion: within 15 % of potential flow at D/16. The scene's water and block take their stress at
 // the cell-mean J and a pure FLIP velocity update (j_bar, flip = 1: docs/water.md, "Buoyancy: J-bar and FLIP");
 // without them the block rises at 0.17 m/s^2 (D/16), with flip = 0.99 at 0.31 m/s^2 (the block's velocity is
-// noisy after 0.2 s with flip = 1).
-TEST(RigidBody, SubmergedBlockStartsRisingAtPotentialFlowAcceleration) {
+// noisy after 0.2 s with flip = 1). Not met: 0.346 m/s^2, 17 % short of the reference at the water's density where
+// the block is (it passed against 0.373, the reference of uncompressed water, until session 33).
+TEST(RigidBody, DISABLED_SubmergedBlockStartsRisingAtPotentialFlowAcceleration) {
   const double a_theory = potential_flow_rise(), a16 = rise_acceleration(0.025);
   std::printf("rise acceleration %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
   EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
 }
 
 // The block in a field of its own, in frictionless contact with the water (rigid key `contact`,
-// sim/rigid_contact.h), with XPIC(4) filtering the FLIP share of both (docs/water.md, "XPIC"): within issue 20's
-// 15 % of potential flow at D/16, and closer than at D/8. In the shared field the same XPIC(4) gives 0.165 and
-// 0.241 m/s^2 (D/8, D/16), the contact with APIC's transfer 0.26 and 0.29 m/s^2 (docs/validation.md, buoyancy).
-TEST(RigidBody, BlockInContactWithXpicRisesAtPotentialFlowAcceleration) {
-  const std::vector<std::string> sets = {"materials.block.contact=true", "materials.water.xpic=4",
-                                         "materials.block.xpic=4"};
+// sim/rigid_contact.h), with XPIC(4) filtering the FLIP share of both (docs/water.md, "XPIC").
+const std::vector<std::string> contact_sets = {"materials.block.contact=true", "materials.water.xpic=4",
+                                               "materials.block.xpic=4"};
+
+// In contact the rise approaches potential flow under refinement: closer at D/16 than at D/8 (0.29 and 0.34 m/s^2
+// against 0.415). In the shared field the same XPIC(4) gives 0.165 and 0.241 m/s^2 (D/8, D/16), the contact with
+// APIC's transfer 0.26 and 0.29 m/s^2 (docs/validation.md, buoyancy).
+TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement) {
   const double a_theory = potential_flow_rise();
-  const double a8 = rise_acceleration(0.05, sets), a16 = rise_acceleration(0.025, sets);
+  const double a8 = rise_acceleration(0.05, contact_sets), a16 = rise_acceleration(0.025, contact_sets);
   std::printf("rise acceleration in contact, XPIC(4): %.4f (D/8), %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a8,
               a16, a_theory);
-  EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
+  EXPECT_GT(a16, 0);
   EXPECT_LT(std::abs(a16 - a_theory), std::abs(a8 - a_theory));
+}
+
+// Issue 20's criterion for the block in contact: within 15 % of potential flow at D/16. Not met: 0.340 m/s^2, 18 %
+// short (it passed against 0.373 until session 33). What is short is the buoyancy the contact passes: the next test.
+TEST(RigidBody, DISABLED_BlockInContactWithXpicRisesAtPotentialFlowAcceleration) {
+  const double a_theory = potential_flow_rise(), a16 = rise_acceleration(0.025, contact_sets);
+  std::printf("rise acceleration in contact, XPIC(4): %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
+  EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
+}
+
+// A block of the water's density where it is (1009.6 kg/m^3) is neutrally buoyant: whatever its added mass it must
+// not accelerate. Bound: the acceleration band of issue 20's criterion for the block of density 920, 15 % of its
+// reference (0.062 m/s^2). Not met: in contact it sinks at 0.18-0.19 m/s^2 at D/8 and D/16 and 0.13 at D/32; the
+// contact passes it 96.5-97.7 % of the displaced water's weight at every resolution, which is 30-40 % of the net
+// buoyancy of the block of density 920 (docs/validation.md, buoyancy, "Session 33").
+TEST(RigidBody, DISABLED_NeutrallyBuoyantBlockInContactStaysAtRest) {
+  std::vector<std::string> sets = contact_sets;
+  sets.push_back("parameters.block_density=" + std::to_string(testing::rise_water_density(1e6)));
+  const double band = 0.15 * potential_flow_rise(), a16 = rise_acceleration(0.025, sets);
+  std::printf("neutrally buoyant block in contact, XPIC(4): %.4f m/s^2 (D/16)\n", a16);
+  EXPECT_NEAR(a16, 0, band);
 }
 
 // The pool of scenes/rigid_rise_float_2d.json stirred by the 0.4 m block rising 1 m through it (D/8 here, 10 s):
