@@ -10,6 +10,7 @@
 #pragma once
 
 #include <numbers>
+#include <string>
 
 #include "hydrostatic_column.h"
 
@@ -25,6 +26,14 @@ inline double rise_water_density(double K) {
 inline double potential_flow_rise(double rho_b, double K) {
   const double D = rise_block_size, V = D * D, C_A = 1.51, rho_w = rise_water_density(K);
   return (rho_w - rho_b) * V * rise_g / (rho_b * V + C_A * rho_w * std::numbers::pi * D * D / 4);
+}
+
+// The scenes' own block and water (their parameters block_density = 920 and K = 1e6 Pa): 0.415 m/s^2.
+constexpr double rise_scene_block_density = 920, rise_scene_K = 1e6;
+inline double scene_rise_reference() { return potential_flow_rise(rise_scene_block_density, rise_scene_K); }
+// The scenes' --set that makes the block neutrally buoyant: its density that of the water where it is.
+inline std::string neutral_block_density_set() {
+  return "parameters.block_density=" + std::to_string(rise_water_density(rise_scene_K));
 }
 
 }  // namespace cdmpm::testing

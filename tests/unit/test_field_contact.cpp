@@ -17,7 +17,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -133,13 +132,9 @@ double ice_rise_acceleration(double dx, std::vector<std::string> sets = {}) {
   return 2 * normal.ldlt().solve(rhs)[2];
 }
 
-// The potential-flow acceleration of the scene's block in its water (K = 1e6 Pa) at 1 m depth: 0.415 m/s^2
-// (rise_reference.h).
-double potential_flow_acceleration() { return testing::potential_flow_rise(920, 1e6); }
-
 // Closer to potential flow at D/16 than at D/8 (0.235 and 0.339 m/s^2 against 0.415).
 TEST(IceRise, ElasticBlockInContactRiseApproachesPotentialFlowUnderRefinement) {
-  const double a_theory = potential_flow_acceleration();
+  const double a_theory = testing::scene_rise_reference();
   const double a8 = ice_rise_acceleration(0.05), a16 = ice_rise_acceleration(0.025);
   std::printf("elastic ice block in contact: %.4f (D/8), %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a8, a16,
               a_theory);
@@ -150,7 +145,7 @@ TEST(IceRise, ElasticBlockInContactRiseApproachesPotentialFlowUnderRefinement) {
 // Issue 20's criterion: within 15 % at D/16. Not met: 0.339 m/s^2, 18 % short of the reference at the water's density
 // where the block is (it passed against 0.373, uncompressed water's, until session 33: docs/validation.md, buoyancy).
 TEST(IceRise, DISABLED_ElasticBlockInContactStartsRisingAtPotentialFlowAcceleration) {
-  const double a_theory = potential_flow_acceleration(), a16 = ice_rise_acceleration(0.025);
+  const double a_theory = testing::scene_rise_reference(), a16 = ice_rise_acceleration(0.025);
   std::printf("elastic ice block in contact: %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
   EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
 }
@@ -162,8 +157,8 @@ TEST(IceRise, DISABLED_ElasticBlockInContactStartsRisingAtPotentialFlowAccelerat
 // sinks at 0.18-0.19 m/s^2 (test_rigid_body.cpp; docs/validation.md, buoyancy, "Session 33"). With the exchange
 // switched off the block in its own field feels no water and falls at g.
 TEST(IceRise, NeutrallyBuoyantElasticBlockInContactStaysAtRest) {
-  const double band = 0.15 * potential_flow_acceleration();
-  const double a8 = ice_rise_acceleration(0.05, {"parameters.block_density=" + std::to_string(testing::rise_water_density(1e6))});
+  const double band = 0.15 * testing::scene_rise_reference();
+  const double a8 = ice_rise_acceleration(0.05, {testing::neutral_block_density_set()});
   std::printf("neutrally buoyant elastic ice block in contact: %.4f m/s^2 (D/8), band %.4f m/s^2\n", a8, band);
   EXPECT_NEAR(a8, 0, band);
 }
@@ -174,7 +169,7 @@ TEST(IceRise, NeutrallyBuoyantElasticBlockInContactStaysAtRest) {
 // at D/8. Stepping the water at the ice's step instead loses momentum to XPIC at every step: 0.177 m/s^2 at D/8
 // (docs/validation.md, "Multi-rate stepping").
 TEST(IceRise, LabStiffBlockWithMultiRateSteppingRisesAtPotentialFlowAcceleration) {
-  const double a_theory = potential_flow_acceleration();
+  const double a_theory = testing::scene_rise_reference();
   const double a = ice_rise_acceleration(0.05, {"parameters.E=1e9", "time.multi_rate=true"});
   std::printf("ice block of E = 1 GPa, multi-rate: %.4f m/s^2 (D/8), potential flow %.4f m/s^2\n", a, a_theory);
   EXPECT_NEAR(a, a_theory, 0.15 * a_theory);

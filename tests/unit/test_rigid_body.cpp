@@ -383,13 +383,9 @@ double rise_acceleration(double dx, std::vector<std::string> sets = {}) {
   }
   return (n * stv - st * sv) / (n * stt - st * st);
 }
-// Potential flow for the scene's block, density 920, in its water (K = 1e6 Pa) at 1 m depth, density 1009.6:
-// 0.415 m/s^2 (rise_reference.h).
-double potential_flow_rise() { return testing::potential_flow_rise(920, 1e6); }
-
 // The initial rise approaches potential flow under refinement: closer at D/16 than at D/8, and upwards.
 TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
-  const double a_theory = potential_flow_rise();
+  const double a_theory = testing::scene_rise_reference();
   const double a8 = rise_acceleration(0.05), a16 = rise_acceleration(0.025);
   std::printf("rise acceleration %.4f (D/8), %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a8, a16, a_theory);
   EXPECT_GT(a16, 0);
@@ -402,7 +398,7 @@ TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
 // noisy after 0.2 s with flip = 1). Not met: 0.346 m/s^2, 17 % short of the reference at the water's density where
 // the block is (it passed against 0.373, the reference of uncompressed water, until session 33).
 TEST(RigidBody, DISABLED_SubmergedBlockStartsRisingAtPotentialFlowAcceleration) {
-  const double a_theory = potential_flow_rise(), a16 = rise_acceleration(0.025);
+  const double a_theory = testing::scene_rise_reference(), a16 = rise_acceleration(0.025);
   std::printf("rise acceleration %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
   EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
 }
@@ -416,7 +412,7 @@ const std::vector<std::string> contact_sets = {"materials.block.contact=true", "
 // against 0.415). In the shared field the same XPIC(4) gives 0.165 and 0.241 m/s^2 (D/8, D/16), the contact with
 // APIC's transfer 0.26 and 0.29 m/s^2 (docs/validation.md, buoyancy).
 TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement) {
-  const double a_theory = potential_flow_rise();
+  const double a_theory = testing::scene_rise_reference();
   const double a8 = rise_acceleration(0.05, contact_sets), a16 = rise_acceleration(0.025, contact_sets);
   std::printf("rise acceleration in contact, XPIC(4): %.4f (D/8), %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a8,
               a16, a_theory);
@@ -427,7 +423,7 @@ TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement
 // Issue 20's criterion for the block in contact: within 15 % of potential flow at D/16. Not met: 0.340 m/s^2, 18 %
 // short (it passed against 0.373 until session 33). What is short is the buoyancy the contact passes: the next test.
 TEST(RigidBody, DISABLED_BlockInContactWithXpicRisesAtPotentialFlowAcceleration) {
-  const double a_theory = potential_flow_rise(), a16 = rise_acceleration(0.025, contact_sets);
+  const double a_theory = testing::scene_rise_reference(), a16 = rise_acceleration(0.025, contact_sets);
   std::printf("rise acceleration in contact, XPIC(4): %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
   EXPECT_NEAR(a16, a_theory, 0.15 * a_theory);
 }
@@ -435,12 +431,12 @@ TEST(RigidBody, DISABLED_BlockInContactWithXpicRisesAtPotentialFlowAcceleration)
 // A block of the water's density where it is (1009.6 kg/m^3) is neutrally buoyant: whatever its added mass it must
 // not accelerate. Bound: the acceleration band of issue 20's criterion for the block of density 920, 15 % of its
 // reference (0.062 m/s^2). Not met: in contact it sinks at 0.18-0.19 m/s^2 at D/8 and D/16 and 0.13 at D/32; the
-// contact passes it 96.5-97.7 % of the displaced water's weight at every resolution, which is 30-40 % of the net
-// buoyancy of the block of density 920 (docs/validation.md, buoyancy, "Session 33").
+// contact passes it 96.5-97.7 % of the displaced water's weight at every resolution, and the missing 2.3-3.5 % is
+// 26-39 % of the net buoyancy of the block of density 920 (docs/validation.md, buoyancy, "Session 33").
 TEST(RigidBody, DISABLED_NeutrallyBuoyantBlockInContactStaysAtRest) {
   std::vector<std::string> sets = contact_sets;
-  sets.push_back("parameters.block_density=" + std::to_string(testing::rise_water_density(1e6)));
-  const double band = 0.15 * potential_flow_rise(), a16 = rise_acceleration(0.025, sets);
+  sets.push_back(testing::neutral_block_density_set());
+  const double band = 0.15 * testing::scene_rise_reference(), a16 = rise_acceleration(0.025, sets);
   std::printf("neutrally buoyant block in contact, XPIC(4): %.4f m/s^2 (D/16)\n", a16);
   EXPECT_NEAR(a16, 0, band);
 }
