@@ -5,7 +5,8 @@
 //   cdmpm run SCENE --dry-run --ranks N [--threads T] [--core-rate R]   (the partition of a distributed run on N
 //         ranks, without its particles: per-rank particles, blocks, halo bytes, memory; run/run_plan.h; prints JSON)
 //   cdmpm check SCENE... [--set path=value ...]   (validity, the estimated cost of each run (run/run_estimate.h) and
-//         its particles, seeded keeping none: every refusal of seeding too)
+//         its particles, seeded keeping none: every refusal of seeding too; warnings of what would move the still
+//         water before any wave, run/still_level_check.h)
 //   cdmpm impulse-wave --velocity V --depth h --thickness s --mass m --width b [--angle deg] [--distance x ...]
 //         (Heller & Hager 2010 impulse-wave relations, src/validation/impulse_wave.h; prints JSON)
 //   cdmpm linear-waves DIR --depth h [--wall x] [--gravity g] [--box a w]
@@ -15,6 +16,7 @@
 // Exit codes: 0 success, 1 runtime error (I/O), 2 bad input (scene, command line or checkpoint), 3 run went
 // unstable, 130/143 interrupted by SIGINT/SIGTERM (checkpoint written, resumable; run/interrupt.h).
 #include <CLI/CLI.hpp>
+#include <omp.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +30,7 @@
 #include "run/run_estimate.h"
 #include "run/run_plan.h"
 #include "run/runner.h"
+#include "run/still_level_check.h"
 #include "validation/impulse_wave.h"
 #include "validation/linear_wave_report.h"
 #ifdef CDMPM_MPI
@@ -66,6 +69,7 @@ int check_scenes(const std::vector<std::string>& paths, const std::vector<std::s
       if (const uint64_t bed = seeded["bed_layer_particles"].get<uint64_t>(); bed > 0)
         std::cout << " and " << bed << " fixed bed-layer particles";
       std::cout << "\n";
+      for (const std::string& w : cdmpm::still_level_warnings(scene)) std::cout << "  warning: " << w << "\n";
     } catch (const std::exception& e) {
       std::cerr << "cdmpm: error: " << e.what() << "\n";
       status = 2;
@@ -211,6 +215,13 @@ int main(int argc, char** argv) {
   }
 
   if (check->parsed()) return check_scenes(check_paths, overrides);
+  // More threads than a few per core only slows a run down, and the OpenMP runtime fails on absurd counts with an
+  // error of its own: refused up front (a --dry-run plans for another machine and may name any count).
+  if (const int limit = std::max(8, 4 * omp_get_num_procs()); threads > limit && !dry_run) {
+    std::cerr << "cdmpm: error: --threads " << threads << ": at most " << limit << " (4 per core of this machine's "
+              << omp_get_num_procs() << ", at least 8)\n";
+    return 2;
+  }
   cdmpm::Scene scene;
   try {
     if (!resume_dir.empty()) resume_inputs(resume_dir, scene_path, overrides);
@@ -222,6 +233,8 @@ int main(int argc, char** argv) {
     const int ranks_here = 1, ranks = 1;
 #endif
     cdmpm::check_run_fits(scene, cdmpm::estimate_run(scene), force || dry_run, ranks_here, ranks);
+    if (speaks() && !dry_run)
+      for (const std::string& w : cdmpm::still_level_warnings(scene)) std::cerr << "cdmpm: warning: " << w << "\n";
     if (dry_run) {
       plan.threads = threads > 0 ? threads : 1;
       const nlohmann::json out = cdmpm::plan_run(scene, plan);

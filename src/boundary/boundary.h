@@ -74,11 +74,17 @@ inline void apply_condition(BoundaryCondition c, Real friction, const Vec<dim>& 
   }
 }
 
-// What a boundary is built with besides its own scene keys: the domain extent and the grid spacing.
+template <int dim>
+class Boundary;
+
+// What a boundary is built with besides its own scene keys: the domain extent, the grid spacing and, in a
+// simulation, all of its boundaries (built in order; a boundary may look at the others once the run starts, e.g.
+// a box's face against another solid is no face of the material).
 template <int dim>
 struct BoundaryContext {
   Vec<dim> domain_size;
   Real dx;
+  const std::vector<std::unique_ptr<Boundary<dim>>>* all = nullptr;
 };
 
 template <int dim>

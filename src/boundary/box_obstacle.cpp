@@ -15,7 +15,8 @@ namespace {
 template <int dim>
 class BoxObstacle final : public Boundary<dim> {
  public:
-  BoxObstacle(const SceneReader& r, const Node& n, const BoundaryContext<dim>& ctx) : Boundary<dim>(r, n, ctx.dx) {
+  BoxObstacle(const SceneReader& r, const Node& n, const BoundaryContext<dim>& ctx)
+      : Boundary<dim>(r, n, ctx.dx), all_(ctx.all), dx_(ctx.dx) {
     Strings keys = Boundary<dim>::common_keys();
     keys.insert(keys.end(), {"min", "max", "velocity", "ramp_time"});
     r.object(n, keys);
@@ -90,8 +91,8 @@ class BoxObstacle final : public Boundary<dim> {
     for (int a = 0; a < dim; ++a) {
       const Real lo = x[a] - min_[a], hi = max_[a] - x[a];
       if (!(lo > 0 && hi > 0)) return;
-      if (open_[a][0] && lo < best) best = lo, axis = a, side = 0;
-      if (open_[a][1] && hi < best) best = hi, axis = a, side = 1;
+      if (open_[a][0] && lo < best && !covered(x, a, 0)) best = lo, axis = a, side = 0;
+      if (open_[a][1] && hi < best && !covered(x, a, 1)) best = hi, axis = a, side = 1;
     }
     if (axis >= 0) x[axis] = side ? max_[axis] : min_[axis];
   }
@@ -102,6 +103,22 @@ class BoxObstacle final : public Boundary<dim> {
     int axis;
   };
   bool mirrored() const { return this->condition_ == BoundaryCondition::Slip && final_velocity_.isZero(); }
+
+  // Whether the face (axis a, side) is against another static box where point x projects onto it (a quarter cell
+  // outside the face): then it is no face of the material there (two boxes side by side: the cliff of a glacier
+  // built from boxes), and a node behind it is mirrored for its nearest face that the material does touch. (A
+  // bathymetry's solid does not cover a face: the water of its bed layer fills it, sim/bed_layer.h.)
+  bool covered(const Vec<dim>& x, int a, int side) const {
+    if (!all_) return false;
+    Vec<dim> p = x;  // x's nearest point of the face, a quarter cell inside its edges, then a quarter cell out
+    const Real q = Real(0.25) * dx_;
+    for (int b = 0; b < dim; ++b)
+      if (b != a) p[b] = std::clamp(p[b], min0_[b] + std::min(q, (max0_[b] - min0_[b]) / 2), max0_[b] - std::min(q, (max0_[b] - min0_[b]) / 2));
+    p[a] = side ? max0_[a] + q : min0_[a] - q;
+    for (const auto& b : *all_)
+      if (b.get() != this && dynamic_cast<const BoxObstacle*>(b.get()) && b->is_solid(p)) return true;
+    return false;
+  }
 
   template <class F>
   void for_each_active_pair(const Grid<dim>& g, F&& f) const {
@@ -137,6 +154,7 @@ class BoxObstacle final : public Boundary<dim> {
       }
       if (a < 0) break;
     }
+
     return pairs_;
   }
   // Adds node i's pair if i is a mirrored ghost of the box: inside it, at depth 1 or 2 below exactly one
@@ -145,12 +163,18 @@ class BoxObstacle final : public Boundary<dim> {
                   const std::array<std::array<bool, 2>, 3>& on_grid) const {
     int depth = std::numeric_limits<int>::max(), count = 0, axis = 0, side = 0;
     bool inside = true;
+    Vec<dim> x;
+    for (int a = 0; a < dim; ++a) x[a] = static_cast<Real>(i[a]) * g.dx;
     for (int a = 0; a < dim && inside; ++a) {
       // Through a face on the domain boundary the box continues into the wall's ghost layers, so that
       // the nodes on and beyond that boundary are mirrored too (the corner of an obstacle and a wall).
-      inside = (!open_[a][0] || i[a] > lo[a]) && (!open_[a][1] || i[a] < hi[a]);
+      // A face against another solid bounds nothing: the node may lie on or beyond it.
+      const bool open_lo = open_[a][0] && !covered(x, a, 0), open_hi = open_[a][1] && !covered(x, a, 1);
+      const Real tol = node_tolerance_cells * g.dx;
+      inside = (!open_lo || (on_grid[a][0] ? i[a] > lo[a] : x[a] > min0_[a] + tol)) &&
+               (!open_hi || (on_grid[a][1] ? i[a] < hi[a] : x[a] < max0_[a] - tol));
       for (int sd = 0; sd < 2 && inside; ++sd) {
-        if (!open_[a][sd]) continue;
+        if (!(sd ? open_hi : open_lo)) continue;
         const int d = sd ? hi[a] - i[a] : i[a] - lo[a];
         if (d < depth) depth = d, count = 1, axis = a, side = sd;
         else if (d == depth) ++count;
@@ -163,6 +187,8 @@ class BoxObstacle final : public Boundary<dim> {
     pairs_.push_back({i, j, axis});
   }
 
+  const std::vector<std::unique_ptr<Boundary<dim>>>* all_;  // the simulation's boundaries (covered)
+  Real dx_;
   Vec<dim> min0_, max0_, final_velocity_;
   double ramp_;
   Vec<dim> velocity_, min_, max_;

@@ -6,13 +6,14 @@
 #include <optional>
 
 #include "hazard/bed_height.h"
+#include "probe/wave_bounds.h"
 #include "parallel/reduction.h"
 
 namespace cdmpm {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kStateTag = 2107.0;  // first number of a saved state (issue 21), against foreign states
+constexpr double kStateTag = 2108.0;  // first number of a saved state (its layout), against foreign states
 
 }  // namespace
 
@@ -23,7 +24,9 @@ HazardMap<dim>::HazardMap(const Simulation<dim>& sim) {
             std::any_of(sim.materials.begin(), sim.materials.end(), [](const Material& m) { return m.traits().fluid; });
   if (!active_) return;
   dx_ = scene.domain.dx;
-  threshold_ = scene.hazard.arrival_threshold;
+  const WaveBounds bounds = wave_bounds(scene);
+  threshold_ = scene.hazard.arrival_threshold.value_or(kNaN);
+  floor_ = bounds.floor;
   interval_ = scene.hazard.interval;
   size_t nc = 1;
   for (int a = 0; a < dim - 1; ++a) {
@@ -31,15 +34,24 @@ HazardMap<dim>::HazardMap(const Simulation<dim>& sim) {
     nc *= static_cast<size_t>(n_[a]);
   }
   bed_.resize(nc);
+  earliest_.resize(nc);
   for (size_t c = 0; c < nc; ++c) {
     std::vector<double> h(dim - 1);
     for (int a = 0; a < dim - 1; ++a) h[a] = centre(c, a);
     bed_[c] = bed_height<dim>(sim.boundaries, sim.domain_size, h);
+    earliest_[c] = bounds.earliest_arrival(h);
   }
+  noise_.assign(nc, 0.0);
+  land_.assign(nc, 0.0);
   still_.assign(nc, kNaN);
   max_top_.assign(nc, kNaN);
   t_max_.assign(nc, kNaN);
   arrival_.assign(nc, kNaN);
+}
+
+template <int dim>
+double HazardMap<dim>::threshold(size_t c) const {
+  return fixed_threshold() ? threshold_ : std::max(3 * noise_[c], floor_);
 }
 
 template <int dim>
@@ -96,8 +108,32 @@ void HazardMap<dim>::init(const Simulation<dim>& sim) {
   measure(sim);
   const std::optional<double>& given = sim.scene.hazard.still_level;
   for (size_t c = 0; c < columns(); ++c) still_[c] = std::isinf(top_[c]) ? kNaN : given ? *given : top_[c];
+  // The columns that any material other than the fluids holds at t = 0 (ice, rigid blocks).
+  std::vector<double> held(columns(), 0.0);
+  const auto& P = sim.particles;
+  for (size_t q = 0; q < P.size(); ++q) {
+    if (sim.materials[P.material[q]].traits().fluid) continue;
+    size_t c = 0, stride = 1;
+    for (int a = 0; a < dim - 1; ++a) {
+      c += stride * static_cast<size_t>(std::clamp(static_cast<int>(std::floor(P.x[q][a] / dx_)), 0, n_[a] - 1));
+      stride *= static_cast<size_t>(n_[a]);
+    }
+    held[c] = 1;
+  }
+  global::max(held);
+  find_land(held);
   find_shores();
   accumulate(sim);
+}
+
+// Land (1): dry at t = 0, held by no other material, the bed above the still water level; 2: held by another material.
+template <int dim>
+void HazardMap<dim>::find_land(const std::vector<double>& held) {
+  level_ = kNaN;
+  for (size_t c = 0; c < columns(); ++c)
+    if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
+  for (size_t c = 0; c < columns(); ++c)
+    land_[c] = held[c] != 0 ? 2.0 : std::isnan(still_[c]) && !std::isnan(level_) && bed_[c] > level_ ? 1.0 : 0.0;
 }
 
 template <int dim>
@@ -114,9 +150,13 @@ void HazardMap<dim>::accumulate(const Simulation<dim>& sim) {
   for (size_t c = 0; c < columns(); ++c) {
     const double top = top_[c];
     if (std::isinf(top)) continue;
-    if (!(top <= max_top_[c])) max_top_[c] = top, t_max_[c] = t;  // NaN at first: taken
     const double ref = std::isnan(still_[c]) ? bed_[c] : still_[c];
-    if (std::isnan(arrival_[c]) && top - ref > threshold_) arrival_[c] = t;
+    if (t < earliest_[c]) {  // no wave can be here yet: the column's noise
+      noise_[c] = std::max(noise_[c], std::abs(top - ref));
+      continue;
+    }
+    if (!(top <= max_top_[c])) max_top_[c] = top, t_max_[c] = t;  // NaN at first: taken
+    if (std::isnan(arrival_[c]) && top - ref > threshold(c)) arrival_[c] = t;
   }
   for (Shore& s : shores_) waterline(sim, s);
 }
@@ -145,19 +185,22 @@ void HazardMap<dim>::find_shores() {
   shores_.clear();
   if (dim != 2) return;
   auto wet = [&](size_t c) { return !std::isnan(still_[c]); };
+  // A dry column that another material holds (an ice cliff) is no shore.
+  auto dry = [&](size_t c) { return std::isnan(still_[c]) && land_[c] != 2; };
   for (size_t i = 0; i + 1 < columns(); ++i) {
-    if (wet(i) && !wet(i + 1) && bed_[i + 1] > still_[i] - dx_) shores_.push_back({i + 1, 1, still_[i]});
-    if (!wet(i) && wet(i + 1) && bed_[i] > still_[i + 1] - dx_) shores_.push_back({i, -1, still_[i + 1]});
+    if (wet(i) && dry(i + 1) && bed_[i + 1] > still_[i] - dx_) shores_.push_back({i + 1, 1, still_[i]});
+    if (dry(i) && wet(i + 1) && bed_[i] > still_[i + 1] - dx_) shores_.push_back({i, -1, still_[i + 1]});
   }
 }
 
 // Layout: tag, columns, shores, last sample time, then per column still level, max top, time of max, arrival,
-// then per shore run-up, its x and time, extent and its time.
+// noise, land, then per shore run-up, its x and time, extent and its time.
 template <int dim>
 std::vector<double> HazardMap<dim>::save_state() const {
   if (!active_) return {};
   std::vector<double> s = {kStateTag, double(columns()), double(shores_.size()), last_sample_};
-  for (size_t c = 0; c < columns(); ++c) s.insert(s.end(), {still_[c], max_top_[c], t_max_[c], arrival_[c]});
+  for (size_t c = 0; c < columns(); ++c)
+    s.insert(s.end(), {still_[c], max_top_[c], t_max_[c], arrival_[c], noise_[c], land_[c]});
   for (const Shore& h : shores_) s.insert(s.end(), {h.runup, h.runup_x, h.runup_time, h.extent_x, h.extent_time});
   return s;
 }
@@ -168,13 +211,19 @@ bool HazardMap<dim>::load_state(const std::vector<double>& s) {
   const size_t nc = columns();
   if (s.size() < 4 || s[0] != kStateTag || s[1] != double(nc)) return false;
   const size_t shores = static_cast<size_t>(s[2]);
-  if (!(s[2] >= 0) || s.size() != 4 + 4 * nc + 5 * shores) return false;
+  if (!(s[2] >= 0) || s.size() != 4 + 6 * nc + 5 * shores) return false;
   last_sample_ = s[3];
   size_t k = 4;
+  std::vector<double> land(nc);
   for (size_t c = 0; c < nc; ++c) {
-    still_[c] = s[k++], max_top_[c] = s[k++], t_max_[c] = s[k++], arrival_[c] = s[k++];
+    still_[c] = s[k++], max_top_[c] = s[k++], t_max_[c] = s[k++], arrival_[c] = s[k++], noise_[c] = s[k++];
+    land[c] = s[k++];
   }
-  find_shores();  // from the still levels and the bed, as at the start
+  land_ = land;
+  level_ = kNaN;
+  for (size_t c = 0; c < nc; ++c)
+    if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
+  find_shores();  // from the still levels, the land and the bed, as at the start
   if (shores_.size() != shores) return false;
   for (Shore& h : shores_) {
     h.runup = s[k++], h.runup_x = s[k++], h.runup_time = s[k++], h.extent_x = s[k++], h.extent_time = s[k++];

@@ -3,26 +3,36 @@
 // particle plus half its spacing, as the wave gauge measures, probe/wave_gauge.cpp), sampled every step or at
 // most once per hazard.interval, and accumulated over the run:
 //   still level      z_top at t = 0 (or hazard.still_level, for a scene that starts with a wave); a column
-//                    without water at t = 0 is dry (land or dry bed),
-//   maximum          the largest z_top and the first time it was reached: the maximum free-surface elevation
-//                    eta_max = max z_top - still level (wet columns) or the maximum inundation depth
-//                    d_max = max z_top - bed (dry columns),
-//   arrival          the first time z_top exceeded the reference (still level, or bed for a dry column) by
-//                    hazard.arrival_threshold,
-//   run-up (2D)      on every shore (a column dry at t = 0 next to a wet one, whose bed lies at most dx below
-//                    the wet column's still level), the waterline: the edge of the last particle of the water
-//                    connected to the sea, in the furthest of the contiguous wet columns up the shore; the
-//                    shoreline's elevation z_s = min(bed just beyond the waterline, water top of that column)
-//                    (the bed on a slope; the water's top at a vertical wall); the run-up R = max z_s - still
-//                    level, the maximum vertical elevation the shoreline reaches above still water (Synolakis
-//                    1987), where and when; and the inundation extent,
-//                    the furthest horizontal position of the waterline, and when.
+//                    without water at t = 0 is dry,
+//   land             a column that held neither water nor any other material (ice, a rigid block) at t = 0 and
+//                    whose bed lies above the still water level (the highest still level of the wet columns):
+//                    initially dry ground, the only place where inundation and run-up are measured,
+//   earliest arrival t_min = the column centre's distance from the wave sources / c_max (probe/wave_bounds.h):
+//                    before it no wave can have reached the column, so what the column shows then is its noise,
+//   noise            the largest |z_top - reference| before t_min (reference: the still level, or the bed of a
+//                    dry column),
+//   maximum          the largest z_top from t_min on and the first time it was reached: the maximum free-surface
+//                    elevation eta_max = max z_top - still level (wet columns) or the maximum inundation depth
+//                    d_max = max z_top - bed (land),
+//   arrival          the first time from t_min on that z_top exceeded the reference by the arrival threshold:
+//                    hazard.arrival_threshold if given, else the column's noise floor, the larger of 3 x its noise
+//                    and the gauges' resolution dx / 100 (a threshold tied to the run's own noise, not to dx alone:
+//                    dx / 4 left coarse 3D grids without arrival times),
+//   run-up (2D)      on every shore (a column dry at t = 0 and not held by another material, next to a wet one,
+//                    whose bed lies at most dx below the wet column's still level), the waterline: the edge of the
+//                    last particle of the water connected to the sea, in the furthest of the contiguous wet
+//                    columns up the shore; the shoreline's elevation z_s = min(bed just beyond the waterline,
+//                    water top of that column) (the bed on a slope; the water's top at a vertical wall); the
+//                    run-up R = max z_s - still level, the maximum vertical elevation the shoreline reaches above
+//                    still water (Synolakis 1987), where and when; and the inundation extent, the furthest
+//                    horizontal position of the waterline, and when.
 // The bed is hazard/bed_height.h under each column centre (0 without terrain). Everything accumulated is a
 // maximum, a minimum or a first time, exact in any order, so the record has the same bits for any thread count;
 // it is saved in checkpoints (save_state) so a resumed run continues it bit for bit. Written at the end of the
 // run by hazard/hazard_report.h.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -60,13 +70,20 @@ class HazardMap {
   int count(int axis) const { return n_[axis]; }      // columns along horizontal axis `axis`
   double centre(size_t column, int axis) const;       // column centre [m]
   double dx() const { return dx_; }
-  double threshold() const { return threshold_; }
+  // The arrival threshold of a column [m] (see above); fixed() whether the scene gave one.
+  double threshold(size_t column) const;
+  bool fixed_threshold() const { return !std::isnan(threshold_); }
+  double floor() const { return floor_; }
   // Per column [m] and [s], NaN where not defined (still level of a dry column; never wet).
   const std::vector<double>& bed() const { return bed_; }
   const std::vector<double>& still_level() const { return still_; }
   const std::vector<double>& max_top() const { return max_top_; }
   const std::vector<double>& time_of_max() const { return t_max_; }
   const std::vector<double>& arrival() const { return arrival_; }
+  const std::vector<double>& earliest_arrival() const { return earliest_; }
+  const std::vector<double>& noise() const { return noise_; }
+  bool land(size_t column) const { return land_[column] == 1; }
+  double still_water_level() const { return level_; }
   const std::vector<Shore>& shores() const { return shores_; }
 
  private:
@@ -74,11 +91,13 @@ class HazardMap {
   void accumulate(const Simulation<dim>& sim);
   void waterline(const Simulation<dim>& sim, Shore& s) const;
   void find_shores();
+  void find_land(const std::vector<double>& held);
 
   bool active_ = false;
-  double dx_ = 0, threshold_ = 0, interval_ = 0, last_sample_ = kNaN;
+  double dx_ = 0, threshold_ = kNaN, floor_ = 0, interval_ = 0, last_sample_ = kNaN, level_ = kNaN;
   int n_[2] = {1, 1};
-  std::vector<double> bed_, still_, max_top_, t_max_, arrival_;
+  std::vector<double> bed_, still_, max_top_, t_max_, arrival_, earliest_, noise_;
+  std::vector<double> land_;  // 1: land (see above), 2: held by another material at t = 0, else 0
   std::vector<double> top_, left_, right_;  // this sample: water top; 2D: leftmost and rightmost particle edge
   std::vector<Shore> shores_;
 };

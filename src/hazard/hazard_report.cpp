@@ -39,9 +39,9 @@ double elevation(const HazardMap<dim>& m, size_t c) {  // NaN for a dry or never
   return m.max_top()[c] - m.still_level()[c];
 }
 template <int dim>
-double depth(const HazardMap<dim>& m, size_t c) {  // maximum inundation depth of a column dry at t = 0
+double depth(const HazardMap<dim>& m, size_t c) {  // maximum inundation depth of land (NaN elsewhere)
   // A particle beside the column centre may lie below the bed there: counted as 0.
-  return wet_at_start(m, c) ? std::nan("") : std::isnan(m.max_top()[c]) ? 0.0 : std::max(0.0, m.max_top()[c] - m.bed()[c]);
+  return !m.land(c) ? std::nan("") : std::isnan(m.max_top()[c]) ? 0.0 : std::max(0.0, m.max_top()[c] - m.bed()[c]);
 }
 
 // The largest elevation over the columns and where.
@@ -61,11 +61,12 @@ nlohmann::json largest_elevation(const HazardMap<dim>& m) {
 
 void write_csv_2d(const std::filesystem::path& out, const HazardMap<2>& m) {
   std::ofstream os = open(out / "hazard.csv");
-  os << "x,bed,still_level,max_elevation,time_of_max,arrival_time,max_depth\n";
+  os << "x,bed,still_level,max_elevation,time_of_max,arrival_time,max_depth,earliest_arrival,arrival_threshold\n";
   for (size_t c = 0; c < m.columns(); ++c)
     os << field(m.centre(c, 0)) << ',' << field(m.bed()[c]) << ',' << field(m.still_level()[c]) << ','
        << field(elevation(m, c)) << ',' << field(m.time_of_max()[c]) << ',' << field(m.arrival()[c]) << ','
-       << field(depth(m, c)) << '\n';
+       << field(depth(m, c)) << ',' << field(m.earliest_arrival()[c]) << ',' << field(m.threshold(c)) << '\n';
+  if (m.shores().empty()) return;  // no run-up to tabulate: the summary says why
   std::ofstream rs = open(out / "runup.csv");
   rs << "shore,direction,shore_x,still_level,runup,runup_x,runup_time,extent_x,extent_time\n";
   for (size_t k = 0; k < m.shores().size(); ++k) {
@@ -101,17 +102,18 @@ nlohmann::json shores_json(const HazardMap<2>& m) {
   return shores;
 }
 
-// 3D: the run-up is the highest bed of an inundated column (dry at t = 0, maximum depth above the arrival
-// threshold) above the still water level (the highest still level of the wet columns); the inundated area is
-// the number of such columns times dx^2.
+// 3D: the run-up is the highest bed of an inundated column (land, hazard_map.h: dry ground above the still water
+// level at t = 0, with a maximum depth above its arrival threshold) above the still water level (the highest
+// still level of the wet columns), so it is never negative; the inundated area is the number of such columns
+// times dx^2.
 nlohmann::json inundation_3d(const HazardMap<3>& m) {
-  double level = std::nan(""), runup = std::nan(""), deepest = 0;
-  size_t inundated = 0, at = 0;
-  for (size_t c = 0; c < m.columns(); ++c)
-    if (larger(m.still_level()[c], level)) level = m.still_level()[c];
+  const double level = m.still_water_level();
+  double runup = std::nan(""), deepest = 0;
+  size_t inundated = 0, at = 0, land = 0;
   for (size_t c = 0; c < m.columns(); ++c) {
+    land += m.land(c);
     const double d = depth(m, c);
-    if (!(d > m.threshold())) continue;
+    if (!(d > m.threshold(c))) continue;
     ++inundated;
     deepest = std::max(deepest, d);
     if (larger(m.bed()[c] - level, runup)) runup = m.bed()[c] - level, at = c;
@@ -120,7 +122,21 @@ nlohmann::json inundation_3d(const HazardMap<3>& m) {
                       {"max_inundation_depth", deepest}, {"runup", number(runup)}};
   if (!std::isnan(runup))
     j.update({{"runup_position", {m.centre(at, 0), m.centre(at, 1)}}, {"runup_time", number(m.arrival()[at])}});
+  else
+    j["runup_reason"] = land == 0 ? "no land: no column is dry ground above the still water level at t = 0"
+                                  : "no land was inundated above the arrival threshold";
   return j;
+}
+
+// The arrival threshold: the scene's, or the per-column rule with its range over the columns.
+template <int dim>
+nlohmann::json threshold_json(const HazardMap<dim>& m) {
+  if (m.fixed_threshold()) return {{"arrival_threshold", m.threshold(0)}};
+  double lo = INFINITY, hi = 0;
+  for (size_t c = 0; c < m.columns(); ++c) lo = std::min(lo, m.threshold(c)), hi = std::max(hi, m.threshold(c));
+  return {{"arrival_threshold", nullptr},
+          {"arrival_threshold_rule", "per column: max(3 x its noise before the earliest arrival, dx / 100)"},
+          {"arrival_threshold_range", {lo, hi}}};
 }
 
 }  // namespace
@@ -128,11 +144,14 @@ nlohmann::json inundation_3d(const HazardMap<3>& m) {
 template <int dim>
 nlohmann::json write_hazard_report(const std::string& out_dir, const HazardMap<dim>& m, const Scene& scene) {
   const std::filesystem::path out(out_dir);
-  nlohmann::json j = {{"arrival_threshold", m.threshold()}, {"interval", scene.hazard.interval},
-                      {"columns", m.columns()}, {"max_elevation", largest_elevation(m)}};
+  nlohmann::json j = threshold_json(m);
+  j.update({{"interval", scene.hazard.interval}, {"columns", m.columns()}, {"max_elevation", largest_elevation(m)}});
   if constexpr (dim == 2) {
     write_csv_2d(out, m);
     j["shores"] = shores_json(m);
+    if (m.shores().empty())
+      j["shores_reason"] = "no shore: no column dry at t = 0 (and held by no other material) beside a wet one "
+                           "with its bed within dx of the still level; runup.csv not written";
   } else {
     const GeoreferenceSpec& g = scene.georeference;
     write_asc(out / "max_elevation.asc", m, g, [&](size_t c) { return elevation(m, c); });

@@ -11,13 +11,20 @@
 // wiggles smaller than eta_th / 2 do not move it, nor do later, higher waves (reflections); a record that never
 // rises above zero has no crest, nor has one whose largest sample of the leading wave is its last (finite) sample:
 // the record ends before the crest has passed (a run stopped while the wave is still rising at the gauge).
+// A gauge's reading (read_gauge) asks more of the first crest: only what can be a wave counts. Samples before the
+// earliest time a wave can reach the gauge (t_min, probe/wave_bounds.h) are the gauge's noise; its noise floor
+// is the larger of three times their largest |eta| and the gauge's resolution (floor, dx / 100). The first
+// crest is sought in the record from t_min on, and must rise above the noise floor; otherwise the gauge reports
+// no crest, with the reason.
 // Celerity between two gauges: c = (x_2 - x_1) / (t_2 - t_1) of their crests; the run's celerity is the
 // least-squares slope of x against arrival time over all gauges with a crest.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace cdmpm {
@@ -60,6 +67,49 @@ inline std::optional<Crest> first_crest(const std::vector<double>& t, const std:
     }
   }
   return c;
+}
+
+// What a gauge's record shows: its first crest (none if not arrived), its noise floor [m] and, without a crest, why.
+struct GaugeReading {
+  std::optional<Crest> crest;
+  double noise_floor = 0;
+  std::string reason;  // empty with a crest
+};
+
+// The first crest of a record that counts as a wave: from t >= earliest on, above the noise floor (see above).
+inline GaugeReading read_gauge(const std::vector<double>& t, const std::vector<double>& eta, double earliest,
+                               double floor) {
+  GaugeReading r;
+  double noise = 0;
+  bool reaches = false;
+  std::vector<double> tail_t, tail_eta;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < earliest) {
+      if (std::isfinite(eta[i])) noise = std::max(noise, std::abs(eta[i]));
+      continue;
+    }
+    reaches = true;
+    tail_t.push_back(t[i]);
+    tail_eta.push_back(eta[i]);
+  }
+  r.noise_floor = std::max(3 * noise, floor);
+  if (!reaches) {
+    r.reason = "the record ends before the earliest possible arrival";
+    return r;
+  }
+  double top = -INFINITY;
+  for (double e : tail_eta)
+    if (std::isfinite(e)) top = std::max(top, e);
+  if (!(top > r.noise_floor)) {
+    r.reason = "no rise above the noise floor";
+    return r;
+  }
+  // The leading wave starts where the record first exceeds the noise floor: the crest fraction is taken of
+  // the record's top with the noise floor as its least.
+  const double fraction = std::max(0.25, r.noise_floor / top);
+  r.crest = first_crest(tail_t, tail_eta, fraction);
+  if (!r.crest) r.reason = "the record ends before the crest has passed";
+  return r;
 }
 
 // Least-squares slope dx/dt of the points (t_i, x_i); nullopt for fewer than two distinct times.

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/resource.h>
+
 #include "grid/grid.h"
 #include "run/progress.h"
 #include "scene/scene_reader.h"
@@ -51,6 +53,22 @@ double machine_memory_bytes() {
   return 0;
 }
 
+MemoryLimit usable_memory_bytes() {
+  MemoryLimit m{machine_memory_bytes(), "the machine"};
+  auto consider = [&](double bytes, const char* source) {
+    if (bytes > 0 && (m.bytes <= 0 || bytes < m.bytes)) m = {bytes, source};
+  };
+  for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+    std::ifstream in(path);
+    double bytes = 0;
+    if (in >> bytes && bytes < 1e18) consider(bytes, "its control group's limit");
+  }
+  rlimit r{};
+  if (getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
+    consider(std::max(0.0, double(r.rlim_cur) - 0.5e9) / 0.9, "ulimit -v");  // compared at 90 % below
+  return m;
+}
+
 RunEstimate estimate_run(const Scene& s) {
   RunEstimate e;
   const double dx = s.domain.dx;
@@ -58,7 +76,8 @@ RunEstimate estimate_run(const Scene& s) {
   e.lattice_blocks = 1;
   for (int a = 0; a < s.dim; ++a)
     e.lattice_blocks *= std::ceil((std::ceil(s.domain.size[a] / dx) + 1 + 2 * Grid<2>::ghost) / Grid<2>::block_width);
-  e.memory_bytes = e.particles * bytes_per_particle(s.dim) + process_bytes(e.lattice_blocks);
+  e.memory_bytes = e.particles * (bytes_per_particle(s.dim) + (s.output.frames ? frame_bytes_per_particle(s.dim) : 0)) +
+                   process_bytes(e.lattice_blocks);
   // Every particle at rest: no speed limit, the materials' rest wave speeds.
   const Real rdx = static_cast<Real>(dx);
   e.first_dt = stable_time_step(s.time, rdx, Real(0), static_cast<Real>(rest_wave_speed(s)),
@@ -93,11 +112,14 @@ void check_run_fits(const Scene& s, const RunEstimate& whole, bool force, int ra
                      " blocks, more than its 32-bit block index holds: coarsen domain.dx" + est);
   if (force) return;
   const std::string override_text = est + "; cdmpm run --force runs it anyway";
-  const double machine = machine_memory_bytes();
+  const MemoryLimit limit = usable_memory_bytes();
+  const double machine = limit.bytes;
   if (machine > 0 && e.memory_bytes > 0.9 * machine)
     throw SceneError(s.path + ": the run needs about " + gigabytes(e.memory_bytes) + " of memory" +
                      (ranks > 1 ? " on this machine (" + std::to_string(ranks_here) + " of its " + std::to_string(ranks) + " ranks)" : "") +
-                     ", the machine has " + gigabytes(machine) + ": coarsen domain.dx or bodies' particles_per_cell" +
+                     ", " + (limit.source == "the machine" ? "the machine has " : "this process may use ") +
+                     gigabytes(machine) + (limit.source == "the machine" ? "" : " (" + limit.source + ")") +
+                     ": coarsen domain.dx or bodies' particles_per_cell" +
                      (ranks > 1 ? ", or run on more machines (cdmpm run --dry-run --ranks N plans it)" : "") + override_text);
   if (e.frames > max_frames)
     throw SceneError(s.path + ": time.frame_interval: the run would write " + format_number(e.frames) +

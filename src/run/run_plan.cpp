@@ -20,7 +20,7 @@ nlohmann::json plan(const Scene& s, const PlanOptions& o) {
   for (int a = 0; a < dim; ++a) size[a] = static_cast<Real>(s.domain.size[a]);
   const Grid<dim> grid(size, static_cast<Real>(s.domain.dx));
   std::vector<std::unique_ptr<Boundary<dim>>> boundaries;
-  for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{size, grid.dx}));
+  for (const BoundarySpec& b : s.boundaries) boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{size, grid.dx, &boundaries}));
   std::vector<Material> materials = s.materials;
   std::vector<uint32_t> blocks;
   std::vector<uint64_t> counts;

@@ -117,12 +117,12 @@ struct GeoreferenceSpec {
 };
 
 // Hazard products of scenes with a fluid (key "hazard"; hazard/hazard_map.h): sampled every step (interval 0)
-// or at most once per interval; a column counts as reached when its elevation exceeds arrival_threshold. The
-// still level of a column wet at t = 0 is its water top then, or still_level if given (a scene that starts
-// with a wave in the water).
+// or at most once per interval; a column counts as reached when its elevation exceeds arrival_threshold (by
+// default each column's own noise floor, hazard/hazard_map.h). The still level of a column wet at t = 0 is its
+// water top then, or still_level if given (a scene that starts with a wave in the water).
 struct HazardSpec {
   bool enabled = true;
-  double arrival_threshold = 0;  // [m]; set by the loader (default dx/4)
+  std::optional<double> arrival_threshold;  // [m]; default: per column, the larger of 3 x its noise and dx / 100
   double interval = 0;           // [s]; 0 = every step
   std::optional<double> still_level;  // [m]; default: each wet column's water top at t = 0
 };

@@ -40,7 +40,12 @@ class Loader {
     s_.name = root.has("name") ? r_.string(root["name"]) : std::filesystem::path(r_.file()).stem().string();
     if (s_.name.empty()) r_.expected(root["name"], "a non-empty string");
     domain(r_.required(root, "domain"));
-    time(r_.required(root, "time"));
+    // Without frames, the frame interval only paces the checkpoints and the default probe interval: it may exceed
+    // time.end (one at the end). output.frames itself is checked by output() below.
+    const auto out = j.find("output");
+    const bool frames = !(out != j.end() && out->is_object() && out->contains("frames") && (*out)["frames"].is_boolean() &&
+                          !(*out)["frames"].get<bool>());
+    time(r_.required(root, "time"), frames);
     // At most 1000 m/s^2 on any axis (100 g): larger values are input mistakes, not planets.
     s_.gravity = root.has("gravity") ? r_.numbers(root["gravity"], dim_, {-1e3, 1e3}) : std::vector<double>(dim_, 0.0);
     if (!root.has("gravity")) s_.gravity.back() = -9.81;
@@ -92,11 +97,12 @@ class Loader {
     r_.set_domain(s_.domain.size);
   }
 
-  void time(const Node& t) {
+  void time(const Node& t, bool frames) {
     r_.object(t, {"end", "frame_interval", "cfl", "wave_cfl", "max_dt", "settle", "settle_damping", "multi_rate"});
     TimeSpec& ts = s_.time;
     ts.end = r_.number(r_.required(t, "end"), gt(0));
-    ts.frame_interval = r_.number(r_.required(t, "frame_interval"), {0, ts.end, true, false}, " (at most time.end)");
+    ts.frame_interval = frames ? r_.number(r_.required(t, "frame_interval"), {0, ts.end, true, false}, " (at most time.end)")
+                               : r_.number(r_.required(t, "frame_interval"), gt(0));
     ts.cfl = r_.number(t, "cfl", {0, 1, true, false}, 0.4);
     ts.wave_cfl = r_.number(t, "wave_cfl", {0, 1, true, false}, 0.4);
     ts.max_dt = r_.number(t, "max_dt", ge(0), 0.0);
@@ -324,16 +330,15 @@ class Loader {
     if (dim_ == 2) geo.azimuth = r_.number(g, "azimuth", {0, 360, false, true}, 90.0);
   }
 
-  // "hazard": {"enabled": bool, "arrival_threshold": m > 0 (default dx/4), "interval": s in [0, time.end] (0: every
-  // step), "still_level": m (default: measured per column at t = 0)}.
+  // "hazard": {"enabled": bool, "arrival_threshold": m > 0 (default: per column, hazard/hazard_map.h), "interval":
+  // s in [0, time.end] (0: every step), "still_level": m (default: measured per column at t = 0)}.
   void hazard(const Node& root) {
     HazardSpec& h = s_.hazard;
-    h.arrival_threshold = s_.domain.dx / 4;
     if (!root.has("hazard")) return;
     Node n = root["hazard"];
     r_.object(n, {"enabled", "arrival_threshold", "interval", "still_level"});
     h.enabled = r_.boolean(n, "enabled", true);
-    h.arrival_threshold = r_.number(n, "arrival_threshold", gt(0), h.arrival_threshold);
+    if (n.has("arrival_threshold")) h.arrival_threshold = r_.number(n["arrival_threshold"], gt(0));
     h.interval = r_.number(n, "interval", {0, s_.time.end}, 0.0);
     if (n.has("still_level"))
       h.still_level = r_.number(n["still_level"], {0, s_.domain.size.back()}, " (inside the domain's height)");
@@ -388,6 +393,15 @@ void apply_override(json& j, const std::string& text, const std::string& file) {
   std::stringstream key(text.substr(0, eq));
   for (std::string part; std::getline(key, part, '.');) parts.push_back(part);
   if (parts.empty() || text[eq - 1] == '.' || contains(parts, "")) fail("empty component in key path");
+  // A parameter that the scene does not define would be used by no expression: a typo, refused like an unknown key.
+  if (parts[0] == "parameters" && parts.size() >= 2 && j.is_object() &&
+      !(j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains(parts[1]))) {
+    Strings known;
+    if (j.contains("parameters") && j["parameters"].is_object())
+      for (const auto& item : j["parameters"].items()) known.push_back(item.key());
+    fail("the scene has no parameter '" + parts[1] + "'" +
+         (known.empty() ? " (it defines none)" : " (its parameters: " + join(known, false) + ")"));
+  }
   json* cur = &j;
   std::string walked;
   for (size_t k = 0; k < parts.size(); ++k) {

@@ -96,12 +96,24 @@ class BodySeeder {
         self_(body) {
     n_ = static_cast<int>(std::lround(std::pow(body.particles_per_cell, 1.0 / dim)));
     h_ = scene.domain.dx / n_;
+    // A liquid's free surface is its still level: the lattice's layers are shifted down (by less than a spacing)
+    // so that a layer's upper edge lies on the body's level (the solitary wave's still level, surface_level, or the
+    // shape's top), where the wave gauges measure the water's top; the lowest layer then keeps the part of its
+    // volume above the shape's bottom (seed_column). A level on a lattice plane keeps the lattice of the grid.
+    if (mat_.traits().fluid && !mat_.traits().rigid && !crevasse_water) {
+      constexpr int up = vertical_axis<dim>;
+      const double level = body.solitary ? body.solitary->still_level : body.surface_level.value_or(body.shape.upper(up));
+      const double planes = level / h_;
+      if (std::abs(planes - std::round(planes)) > 1e-9 * std::max(1.0, std::abs(planes)))
+        shift_ = level - std::ceil(planes) * h_;
+    }
     if (!mat_.traits().rigid)
       for (const BodySpec& b : scene.bodies)
         if (materials[b.material_index].traits().rigid) rigid_shapes_.emplace_back(b);
     for (int a = 0; a < dim; ++a) {
-      lo_[a] = static_cast<int>(std::floor(body.shape.lower(a) / h_ - 0.5));
-      hi_[a] = static_cast<int>(std::ceil(body.shape.upper(a) / h_ - 0.5));
+      const double shift = a == vertical_axis<dim> ? shift_ : 0.0;
+      lo_[a] = static_cast<int>(std::floor((body.shape.lower(a) - shift) / h_ - 0.5));
+      hi_[a] = static_cast<int>(std::ceil((body.shape.upper(a) - shift) / h_ - 0.5));
       centre_[a] = static_cast<Real>(0.5 * (body.shape.lower(a) + body.shape.upper(a)));
       v0_[a] = body.velocity.empty() ? Real(0) : static_cast<Real>(body.velocity[a]);
     }
@@ -128,6 +140,7 @@ class BodySeeder {
       for (k[up] = lo_[up]; k[up] <= hi_[up]; ++k[up]) {
         DVec<dim> x;
         for (int a = 0; a < dim; ++a) x[a] = (k[a] + 0.5) * h_;
+        x[up] += shift_;
         Vec<dim> n = Vec<dim>::Zero();  // set by filled() for the bed layer
         const Fill f = filled(x, n);
         if (f == Fill::Material) column.push_back(x);
@@ -279,8 +292,16 @@ class BodySeeder {
           static_cast<Real>(solid ? rho0 * g * std::max(0.0, level - x[up]) : (loaded ? fluid_pressure[i] : 0.0));
       const InitialState<dim> st =
           mat_.visit([&](const auto& model) { return model.template initial_state<dim>(loaded ? pressure : Real(0), static_cast<Real>(body_.lateral_stress_ratio)); });
-      // The particle occupies volume h^dim now; its reference (unstressed) volume is h^dim / J.
-      const Real V0 = cell_volume_ / st.J;
+      // The particle occupies volume h^dim now; its reference (unstressed) volume is that over J. A shifted
+      // liquid's lowest particle in a column that stands on the shape's bottom (its cell's lower edge within half
+      // a spacing of it) takes the volume from the bottom to its cell's upper edge, so each column holds the
+      // water between the shape's bottom and the level.
+      double share = 1;
+      if (shift_ != 0 && i == 0) {
+        const double gap = x[up] - 0.5 * h_ - body_.shape.lower(up);
+        if (std::abs(gap) <= 0.5 * h_) share = 1 - gap / h_;
+      }
+      const Real V0 = cell_volume_ * static_cast<Real>(share) / st.J;
       // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
       Vec<dim> vp = v0_ + G_ * (xp - centre_);
       if (body_.solitary) {  // sim/solitary_wave.h
@@ -305,6 +326,7 @@ class BodySeeder {
   std::vector<Tilted<dim>> rigid_shapes_;
   int n_ = 1;
   double h_ = 1;
+  double shift_ = 0;  // the vertical offset of a liquid's lattice from the grid's (0 or in (-h, 0))
   IVec<dim> lo_, hi_;
   Vec<dim> v0_, centre_;  // the body's initial velocity and the centre of its bounding box
   Mat<dim> G_;            // its initial velocity gradient (also the particles' APIC matrix)

@@ -32,7 +32,7 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   }
   grid = Grid<dim>(domain_size, static_cast<Real>(s.domain.dx));
   for (const BoundarySpec& b : s.boundaries)
-    boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{domain_size, grid.dx}));
+    boundaries.push_back(make_boundary<dim>(s, b, BoundaryContext<dim>{domain_size, grid.dx, &boundaries}));
   sinks = s.sinks;
   for (const auto& b : boundaries)
     for (const SinkSpec& k : b->sinks()) sinks.push_back(k);

@@ -1,0 +1,191 @@
+// test_wave_bounds.cpp - numbers a hazard modeller can quote: what a run reports about its waves is physically
+// possible, or absent with a reason (probe/wave_bounds.h, probe/wave_analysis.h, hazard/hazard_map.h):
+//   WaveBounds (unit): a gauge's first crest comes no earlier than the fastest wave can bring it (distance from
+//     the sources over 2 sqrt(g h_max)) and rises above the gauge's noise floor; otherwise no crest, with a reason;
+//   SetUpTraps (end-to-end): a run's set-up never silently differs from what the user wrote: an unknown
+//     parameter in --set, the still level of water whose depth is not a whole number of particle spacings, a
+//     frame interval beyond the end without frames, thread counts and memory beyond the machine;
+//   HostileOutputs (end-to-end): short and coarse runs of the shipped scenes report no phantom crest, no
+//     impossible celerity, no negative run-up.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cli_helpers.h"
+#include "probe/wave_analysis.h"
+#include "probe/wave_bounds.h"
+#include "scene/scene_loader.h"
+
+namespace cdmpm::testing {
+namespace {
+
+constexpr double kG = 9.81;  // [m/s^2]
+
+// A record sampled every 0.05 s to 20 s: millimetre noise from t = 0, and (if amplitude > 0) a Gaussian crest
+// of that amplitude at t_crest.
+void record(double amplitude, double t_crest, std::vector<double>& t, std::vector<double>& eta) {
+  t.clear();
+  eta.clear();
+  for (int i = 0; i <= 400; ++i) {
+    const double ti = 0.05 * i;
+    t.push_back(ti);
+    eta.push_back(1e-3 * std::sin(7.3 * ti) + amplitude * std::exp(-std::pow((ti - t_crest) / 0.8, 2)));
+  }
+}
+
+// The calving front's sources and depth (scenes/calving_front_2d.json: ice up to x = 600 m, water 40 m deep):
+// c_max = 2 sqrt(g 40) and the gauge 600 m from the ice front cannot see a wave before 600 / c_max = 15.1 s.
+TEST(WaveBounds, EarliestArrivalIsTheSourceDistanceOverTwiceTheLongWaveSpeed) {
+  const Scene s = load_scene(source_path("scenes/calving_front_2d.json"), {});
+  const WaveBounds b = wave_bounds(s);
+  EXPECT_DOUBLE_EQ(b.h_max, 40.0);
+  EXPECT_NEAR(b.c_max, 2 * std::sqrt(kG * 40), 1e-12);
+  EXPECT_TRUE(b.bounded_source);
+  EXPECT_NEAR(b.earliest_arrival({1200}), 600 / (2 * std::sqrt(kG * 40)), 1e-12);
+  EXPECT_EQ(b.earliest_arrival({300}), 0.0);  // over the ice
+  EXPECT_DOUBLE_EQ(b.floor, 5.0 / 100);
+  EXPECT_TRUE(b.possible_celerity(std::sqrt(kG * 40)));
+  EXPECT_FALSE(b.possible_celerity(-5));
+  EXPECT_FALSE(b.possible_celerity(2.01 * std::sqrt(kG * 40)));
+  // Water that starts with its wave (a solitary wave, no other body) bounds no arrival.
+  EXPECT_EQ(wave_bounds(load_scene(source_path("scenes/solitary_runup_2d.json"), {})).earliest_arrival({19}), 0.0);
+}
+
+// A crest that rises above the noise after the earliest arrival is the first crest; the noise before it is not.
+TEST(WaveBounds, CrestAfterTheEarliestArrivalIsFoundAndTheNoiseBeforeItIsNot) {
+  std::vector<double> t, eta;
+  record(0.5, 12.0, t, eta);
+  const GaugeReading r = read_gauge(t, eta, 8.0, 0.01);
+  ASSERT_TRUE(r.crest) << r.reason;
+  EXPECT_NEAR(r.crest->time, 12.0, 0.05);
+  EXPECT_NEAR(r.crest->amplitude, 0.5, 0.01);
+  EXPECT_NEAR(r.noise_floor, 0.01, 1e-12);  // 3 x 1 mm is below the resolution floor
+}
+
+// Millimetre jitter read before the wave can arrive is no crest (the old analysis took the record's own top as
+// its scale and reported it); nor is a record that ends before the earliest arrival.
+TEST(WaveBounds, NoiseBeforeTheEarliestArrivalIsNoCrest) {
+  std::vector<double> t, eta;
+  record(0, 0, t, eta);
+  EXPECT_TRUE(first_crest(t, eta));  // what the unbounded analysis reads
+  const GaugeReading quiet = read_gauge(t, eta, 5.0, 0.05);
+  EXPECT_FALSE(quiet.crest);
+  EXPECT_EQ(quiet.reason, "no rise above the noise floor");
+  const GaugeReading early = read_gauge(t, eta, 25.0, 0.05);
+  EXPECT_FALSE(early.crest);
+  EXPECT_EQ(early.reason, "the record ends before the earliest possible arrival");
+  // A rise before the earliest arrival sets the noise floor: a later crest must clear three times it.
+  record(0.2, 3.0, t, eta);
+  const GaugeReading masked = read_gauge(t, eta, 5.0, 0.01);
+  EXPECT_GT(masked.noise_floor, 0.05);
+  EXPECT_FALSE(masked.crest);
+}
+
+// An unknown parameter in --set is refused with the list of the scene's parameters, like an unknown key.
+TEST(SetUpTraps, UnknownParameterInSetIsRefusedWithTheKnownOnes) {
+  TempDir dir;
+  const CliResult r = run_cdmpm({"run", source_path("scenes/calving_front_2d.json"), "--out", dir / "run", "--set",
+                                 "parameters.dX=5", "--steps", "1", "--quiet"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no parameter 'dX'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("notch_depth"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "run"));
+  const CliResult c = run_cdmpm({"check", source_path("scenes/calving_front_2d.json"), "--set", "parameters.dX=5"});
+  EXPECT_EQ(c.exit_code, 2) << c.output;
+}
+
+// Water 197 m deep seeded at 4 particles per 10 m cell (a spacing of 5 m: 39.4 spacings) stands at 197 m, not at
+// 195 or 200: the gauge, measuring from the scene's still level, starts at 0 within rounding and the lake
+// (a well-balanced bed of the Eqip Sermia profile) stays within dx/20 over 5 s.
+TEST(SetUpTraps, WaterIsSeededToItsStillLevel) {
+  TempDir dir;
+  const CliResult r = run_cdmpm({"run", source_path("scenes/lake_at_rest_2d.json"), "--out", dir / "run", "--quiet",
+                                 "--set", "parameters.sea_level=197", "--set", "time.end=5", "--set",
+                                 "time.frame_interval=5", "--set", "output.frames=false"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto probes = read_probes(dir / "run/probes.csv");
+  const auto& eta = probes.at("gauge_2000");
+  EXPECT_NEAR(eta.front(), 0.0, 1e-9);
+  for (double e : eta) EXPECT_LE(std::abs(e), 10.0 / 20);
+}
+
+// What would move the still water before any wave is said by check: water seeded without its hydrostatic state
+// settles by rho0 g H^2 / (2K), for the calving front's 40 m of water at K = 1e8 Pa 1000 x 9.81 x 40^2 / 2e8 =
+// 0.07848 m, more than dx/20 at dx = 1 m; and a gauge whose still level is not the water's.
+TEST(SetUpTraps, CheckWarnsOfWaterThatWouldSettle) {
+  const CliResult quiet = run_cdmpm({"check", source_path("scenes/calving_front_2d.json")});
+  EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("warning"), std::string::npos) << quiet.output;
+  const CliResult r = run_cdmpm({"check", source_path("scenes/calving_front_2d.json"), "--set",
+                                 "bodies.1.hydrostatic=false", "--set", "parameters.dx=1"});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: bodies[1]: hydrostatic is false"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0.07848 m"), std::string::npos) << r.output;
+  // A gauge measuring from a level 1 m off the water's.
+  const CliResult g2 = run_cdmpm({"check", source_path("scenes/lake_at_rest_2d.json"), "--set",
+                                  "probes.list.2.still_level=201"});
+  EXPECT_NE(g2.output.find("warning: probes.list[2]: still_level 201 m differs"), std::string::npos) << g2.output;
+}
+
+// Without frames, a frame interval longer than the run only paces checkpoints: accepted; with frames, refused.
+TEST(SetUpTraps, FrameIntervalBeyondTheEndIsAcceptedWithoutFrames) {
+  TempDir dir;
+  const std::vector<std::string> common = {"--quiet", "--set", "time.end=0.02", "--set", "time.frame_interval=1"};
+  auto args = [&](const std::string& out, bool frames) {
+    std::vector<std::string> a = {"run", source_path("scenes/dam_break_2d.json"), "--out", dir / out};
+    a.insert(a.end(), common.begin(), common.end());
+    a.insert(a.end(), {"--set", std::string("output.frames=") + (frames ? "true" : "false")});
+    return a;
+  };
+  const CliResult off = run_cdmpm(args("off", false));
+  EXPECT_EQ(off.exit_code, 0) << off.output;
+  const CliResult on = run_cdmpm(args("on", true));
+  EXPECT_EQ(on.exit_code, 2) << on.output;
+  EXPECT_NE(on.output.find("time.frame_interval"), std::string::npos) << on.output;
+}
+
+// Thread counts no machine runs well and a scene too big for the memory this process may use (its address-space
+// limit, ulimit -v 1.1 GB: 4.1 M particles of 1e6 per cell need about 1.6 GB with their frames) are refused up
+// front with exit 2 and a message, not left to the OpenMP runtime or a bad_alloc.
+TEST(SetUpTraps, AbsurdThreadsAndTooLittleMemoryAreRefusedUpFront) {
+  TempDir dir;
+  for (const char* threads : {"10000", "2e9"}) {
+    const CliResult r = run_cdmpm({"run", source_path("scenes/dam_break_2d.json"), "--out", dir / "t", "--threads",
+                                   threads, "--steps", "1", "--quiet"});
+    EXPECT_EQ(r.exit_code, 2) << threads << ": " << r.output;
+    EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
+  }
+  const std::string cmd = "ulimit -v 1100000; exec " + quote(CDMPM_BINARY) + " run " +
+                          quote(source_path("scenes/dam_break_2d.json")) + " --out " + quote(dir / "m") +
+                          " --set domain.dx=0.04 --set bodies.0.particles_per_cell=1000000 --steps 2 --quiet";
+  const CliResult m = run_program("/bin/sh", {"-c", cmd});
+  EXPECT_EQ(m.exit_code, 2) << m.output;
+  EXPECT_NE(m.output.find("ulimit -v"), std::string::npos) << m.output;
+  EXPECT_FALSE(fs::exists(dir / "m"));
+}
+
+// The calving front at dx = 10 m, stopped at 6 s: the iceberg has fallen, the wave has not reached the 600 m
+// gauge (no wave can before 15 s): no crest there, with its reason; no celerity from one gauge; no shore, said.
+TEST(HostileOutputs, ShortCoarseCalvingRunReportsNoPhantomCrest) {
+  TempDir dir;
+  const CliResult r = run_cdmpm({"run", source_path("scenes/calving_front_2d.json"), "--out", dir / "run", "--quiet",
+                                 "--set", "parameters.dx=10", "--set", "time.end=6", "--set", "output.frames=false"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CsvTable waves = read_csv_table(dir / "run/waves.csv");
+  const auto gauge = waves.strings("gauge"), reason = waves.strings("reason");
+  const auto amplitude = waves.numbers("amplitude"), earliest = waves.numbers("earliest_arrival");
+  for (size_t i = 0; i < gauge.size(); ++i)
+    if (gauge[i] == "gauge_600m") {
+      EXPECT_TRUE(std::isnan(amplitude[i])) << amplitude[i];
+      EXPECT_EQ(reason[i].rfind("not arrived: ", 0), 0u) << reason[i];
+      EXPECT_NEAR(earliest[i], 600 / (2 * std::sqrt(kG * 40)), 1e-6);
+    }
+  const nlohmann::json s = read_json(dir / "run/summary.json");
+  EXPECT_TRUE(s["celerity"].is_null()) << s["celerity"];
+  EXPECT_TRUE(s["hazard"]["shores"].empty());
+  EXPECT_TRUE(s["hazard"].contains("shores_reason"));
+  EXPECT_FALSE(fs::exists(dir / "run/runup.csv"));
+}
+
+}  // namespace
+}  // namespace cdmpm::testing
