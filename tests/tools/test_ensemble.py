@@ -395,9 +395,38 @@ def slurm_array_tasks_give_the_same_members():
 
 
 @test
+def slurm_tasks_with_ranks_run_under_the_launcher():
+    ref, spec = reference()
+    out = os.path.join(work("slurm_launcher"), "out")
+    # A launcher is any command that runs the rest of the line (srun, mpirun -np N); env stands in for it here.
+    r = ensemble("run", spec, "--out", out, "--cdmpm", ARGS.cdmpm, "--slurm", "--ranks", "3", "--threads", "2",
+                 "--launcher", "env CDMPM_TEST_LAUNCHED=1", "--max-parallel", "2")
+    check(r.returncode == 0, f"run --slurm --ranks 3 exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, "slurm", "array.sh")) as f:
+        text = f.read()
+    for line in ("#SBATCH --array=0-5%2", "#SBATCH --ntasks=3", "#SBATCH --cpus-per-task=2"):
+        check(line + "\n" in text, f"array.sh lacks {line}")
+    r = subprocess.run(["bash", os.path.join(out, "slurm", "array.sh")], env=dict(os.environ, SLURM_ARRAY_TASK_ID="4"),
+                       capture_output=True, text=True)
+    check(r.returncode == 0, f"array task 4 exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, "members", "0004", "cdmpm.log")) as f:
+        first = f.readline()
+    check(first.startswith(f"$ env CDMPM_TEST_LAUNCHED=1 {ARGS.cdmpm} run ") and "--threads 2" in first,
+          f"member 4 did not run under the launcher with 2 threads: {first}")
+    same_files(os.path.join(out, "members", "0004"), os.path.join(ref, "members", "0004"), MEMBER_FILES)
+    r = ensemble("run", spec, "--out", os.path.join(out, "x"), "--cdmpm", ARGS.cdmpm, "--ranks", "2")
+    check(r.returncode == 2 and "--ranks: only with --slurm" in r.stderr, f"--ranks without --slurm: {r.stderr}")
+
+
+@test
 def slurm_real_submission():
+    if ARGS.start_slurm:
+        r = subprocess.run(["bash", os.path.join(ROOT, "tests", "tools", "start_local_slurm.sh")],
+                           capture_output=True, text=True)
+        check(r.returncode == 0, f"start_local_slurm.sh failed: {r.stderr.strip()}")
     if not slurm_up():
-        print("  (no Slurm controller answers sinfo: the submission through sbatch is not tested)")
+        print("  (no Slurm controller answers sinfo: the submission through sbatch is not tested; "
+              "--start-slurm starts one)")
         return "skip"
     ref, spec = reference()
     out = os.path.join(work("slurm_real"), "out")
@@ -449,7 +478,8 @@ def failed_and_unstable_members_are_recorded_and_the_others_go_on():
 def rasters_3d_percentiles_and_georeference():
     d = work("rasters")
     spec = {"scene": os.path.join(ROOT, "scenes", "dam_break_3d.json"),
-            "set": ["domain.dx=0.0142875", "output.frames=false"],
+            "set": ["domain.dx=0.0142875", "output.frames=false",
+                    'georeference={"easting":512345.5,"northing":7712345.25}'],
             "members": 5, "seed": 3, "vary": {"materials.water.bulk_modulus": {"range": [2e5, 8e5], "scale": "log"},
                                               "time.end": {"range": [0.04, 0.2]}},
             "thresholds": [0.005, 0.02]}
@@ -496,6 +526,8 @@ def rasters_3d_percentiles_and_georeference():
         a, b = json.loads(info.stdout), json.loads(ref.stdout)
         check(a["geoTransform"] == b["geoTransform"] and a["size"] == b["size"],
               f"GDAL reads {a['geoTransform']} {a['size']}, the member's {b['geoTransform']} {b['size']}")
+        check(a["geoTransform"][0] == 512345.5 and a["geoTransform"][1] == 0.0142875,
+              f"GDAL's origin and cell size {a['geoTransform']}, expected the scene's easting 512345.5 and dx")
     else:
         print("  (gdalinfo not installed: the GDAL reading is not tested)")
 
@@ -506,6 +538,8 @@ def main():
     ap.add_argument("--cdmpm", default=os.path.join(ROOT, "build", "cdmpm"), help="the cdmpm program")
     ap.add_argument("--work", help="work folder (default: a new temporary folder, removed unless --keep)")
     ap.add_argument("--keep", action="store_true", help="keep the work folder")
+    ap.add_argument("--start-slurm", action="store_true",
+                    help="start a single-node Slurm first (tests/tools/start_local_slurm.sh: root, apt)")
     ap.add_argument("-k", dest="only", action="append", default=[], help="run only tests whose name contains this")
     ARGS = ap.parse_args()
     ARGS.cdmpm = os.path.abspath(ARGS.cdmpm)
