@@ -107,7 +107,10 @@ def reference():
     """The uninterrupted tiny ensemble on a pool of 2 (run once, shared by the tests that compare with it)."""
     if "out" not in _reference:
         d = work("reference")
-        spec = write_spec(d, "tiny.json", tiny_spec())
+        obs = os.path.join(d, "observed_200m.csv")
+        with open(obs, "w") as f:
+            f.write("time,gauge_200m\n" + "".join(f"{t},{0.5 * math.sin(t)}\n" for t in range(15)))
+        spec = write_spec(d, "tiny.json", tiny_spec(observations={"gauge_200m": obs}))
         run_ensemble(spec, os.path.join(d, "out"), "--pool", "2")
         _reference.update(out=os.path.join(d, "out"), spec=spec)
     return _reference["out"], _reference["spec"]
@@ -134,6 +137,8 @@ def bad_specs_refused():
         ("bad_threshold", {"thresholds": [0]}, "thresholds"),
         ("no_scene", {"scene": "scenes/nowhere.json"}, "scene"),
         ("cross_not_multiple", {"lists": "cross", "members": 3}, "members"),
+        ("observations_missing", {"observations": {"gauge_200m": "nowhere.csv"}}, "observations.gauge_200m"),
+        ("observations_no_column", {"observations": {"gauge_200m": CALVING}}, "observations.gauge_200m"),
     ]
     for name, change, key in cases:
         spec = dict(good)
