@@ -23,7 +23,8 @@ chown munge:munge /run/munge /var/log/munge /var/lib/munge
 [ -s /etc/munge/munge.key ] || { dd if=/dev/urandom of=/etc/munge/munge.key bs=128 count=1 status=none; chown munge:munge /etc/munge/munge.key; chmod 400 /etc/munge/munge.key; }
 if ! munge -n >/dev/null 2>&1; then
   runuser -u munge -- /usr/sbin/munged
-  pgrep -u munge -x munged > "$pids/munged.pid"
+  sleep 1
+  cp /run/munge/munged.pid "$pids/munged.pid"   # munged's own, written once it has detached
 fi
 host=$(hostname -s)
 node=$(slurmd -C | head -1)   # NodeName=HOST CPUs=... RealMemory=... as slurmd sees this machine
