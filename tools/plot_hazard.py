@@ -16,7 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail as fail_as, output_folder, read_csv  # noqa: E402
+from plot_style import fail as fail_as, output_folder, read_asc, read_csv  # noqa: E402
 
 TOOL = "plot_hazard"
 
@@ -33,19 +33,6 @@ try:
     import numpy as np
 except ImportError as e:
     fail(f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
-
-
-def read_asc(path):
-    head = {}
-    with open(path) as f:
-        for _ in range(6):
-            key, value = f.readline().split()
-            head[key.lower()] = float(value)
-        data = np.loadtxt(f, ndmin=2)
-    data = np.where(data == head.get("nodata_value", np.nan), np.nan, data)
-    extent = [head["xllcorner"], head["xllcorner"] + head["ncols"] * head["cellsize"],
-              head["yllcorner"], head["yllcorner"] + head["nrows"] * head["cellsize"]]
-    return data, extent
 
 
 def plot_2d(run, out):
@@ -81,7 +68,7 @@ def plot_3d(run, out):
              ("arrival_time.asc", "arrival time [s]"), ("inundation_depth.asc", "maximum inundation depth [m]")]
     fig, axes = plt.subplots(2, 2, figsize=(12, 8))
     for ax, (name, label) in zip(axes.flat, names):
-        data, extent = read_asc(os.path.join(run, name))
+        data, _, _, extent = read_asc(os.path.join(run, name))
         im = ax.imshow(data, extent=extent, origin="upper", aspect="equal")
         fig.colorbar(im, ax=ax, label=label)
         ax.set_xlabel("easting [m]")

@@ -12,8 +12,11 @@
                                 materials without damage), or by the material names of older frames;
   probe_units(run_dir)          axis label with units for every column of probes.csv, from the probe types in
                                 the run's scene.resolved.json (2D runs: extensive quantities per metre of width);
-  read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, ...) as column name -> array
-                                (an empty field is NaN);
+  read_csv(path)                a CSV file with a header (probes.csv, hazard.csv, waves.csv ...) as column name ->
+                                array (an empty field is NaN; a column with a field that is not a number, such as
+                                waves.csv's gauge names, is an array of strings);
+  read_asc(path)                an ESRI ASCII grid (the 3D hazard rasters): (values with NaN for NODATA, header
+                                {key: number}, the header's six lines as written, map extent);
   add_frame_arguments(ap)       the arguments OUT FRAME [--material M] that read_material_frame takes;
   read_material_frame(tool, out, frame, material, needs)
                                 frame FRAME of run OUT (particles_FRAME.vtu): its path, and the positions and fields
@@ -142,8 +145,30 @@ def read_csv(path):
         rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
     cols = {}
     for k, name in enumerate(header):
-        cols[name] = np.array([float(r[k]) if k < len(r) and r[k] != "" else np.nan for r in rows])
+        fields = [r[k] if k < len(r) else "" for r in rows]
+        try:
+            cols[name] = np.array([float(v) if v != "" else np.nan for v in fields])
+        except ValueError:
+            cols[name] = np.array(fields)
     return cols
+
+
+def read_asc(path):
+    """(values, header, header_lines, extent) of an ESRI ASCII grid: values with NaN where NODATA_value, header
+    {lower-case key: number}, its six lines as written (to write a grid with the same georeference), and the map
+    extent [west, east, south, north]."""
+    head, lines = {}, []
+    with open(path) as f:
+        for _ in range(6):
+            line = f.readline()
+            key, value = line.split()
+            head[key.lower()] = float(value)
+            lines.append(line.rstrip("\n"))
+        data = np.loadtxt(f, ndmin=2)
+    data = np.where(data == head.get("nodata_value", np.nan), np.nan, data)
+    extent = [head["xllcorner"], head["xllcorner"] + head["ncols"] * head["cellsize"],
+              head["yllcorner"], head["yllcorner"] + head["nrows"] * head["cellsize"]]
+    return data, head, lines, extent
 
 
 def run_cdmpm(tool, scene, out, threads=None, sets=(), force=True):
