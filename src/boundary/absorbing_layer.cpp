@@ -71,6 +71,7 @@ class AbsorbingLayer final : public Boundary<dim> {
     v[axis_] = (v[axis_] + sigma_dt * target) / (1 + sigma_dt);
   }
   bool is_solid(const Vec<dim>&) const override { return false; }
+  bool relaxes() const override { return true; }
   std::string needs_closed_face() const override { return face_; }
 
   std::vector<SinkSpec> sinks() const override {

@@ -125,6 +125,9 @@ class Boundary {
   // within reach of its surface where fixed water particles complete the kernel support of the water above;
   // sets the surface's unit normal there (pointing into the material).
   virtual bool in_bed_layer(const Vec<dim>&, Vec<dim>&) const { return false; }
+  // True for a condition that relaxes the velocity towards a target rather than constraining it (absorbing
+  // layers): it acts once per node and step, and is left out of the repeated solid conditions (apply_conditions).
+  virtual bool relaxes() const { return false; }
 
   // Distance within which a grid node counts as on a face (see above).
   static Real node_tolerance(Real dx) { return node_tolerance_cells * dx; }
@@ -146,9 +149,31 @@ bool any_solid(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec
 }
 
 // Every boundary's condition on the velocity v of the grid node at x, in the scene's order (Boundary::apply).
+// Where two solids meet at a node whose normals are not orthogonal (a cliff's box face on a sloping bed), each
+// slip condition is a projection onto its tangent plane, and one pass of each leaves the earlier one violated:
+// the water ran down the cliff face into the bed, and a lake at rest at the foot of the Eqip Sermia cliff rose
+// 0.69 m in 20 s at dx = 40 m (0.08 m, away from the cliff, with the conditions met). Alternating projections
+// converge to their intersection (von Neumann 1950): after the pass in order, the solids' conditions are applied
+// in turn again, from the one after the last that changed v, until a whole round of the others changes nothing
+// (at most kConditionRounds rounds). A node where at most one solid acts keeps the bits of a single pass.
+inline constexpr int kConditionRounds = 64;
+
 template <int dim>
 void apply_conditions(const std::vector<std::unique_ptr<Boundary<dim>>>& bcs, const Vec<dim>& x, Vec<dim>& v) {
-  for (const auto& b : bcs) b->apply(x, v);
+  const int n = static_cast<int>(bcs.size());
+  int last = -1;
+  for (int k = 0; k < n; ++k) {
+    const Vec<dim> before = v;
+    bcs[k]->apply(x, v);
+    if (!bcs[k]->relaxes() && v != before) last = k;
+  }
+  if (last < 0 || n < 2) return;
+  for (int step = 0, k = (last + 1) % n; k != last && step < kConditionRounds * n; ++step, k = (k + 1) % n) {
+    if (bcs[k]->relaxes()) continue;
+    const Vec<dim> before = v;
+    bcs[k]->apply(x, v);
+    if (v != before) last = k;
+  }
 }
 
 // Defines the registry's factory NAME<dim> (2D and 3D) building a CLASS<dim> from its scene object; each boundary

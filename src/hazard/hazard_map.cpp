@@ -26,7 +26,7 @@ HazardMap<dim>::HazardMap(const Simulation<dim>& sim) {
   dx_ = scene.domain.dx;
   const WaveBounds bounds = wave_bounds(scene);
   threshold_ = scene.hazard.arrival_threshold.value_or(kNaN);
-  floor_ = bounds.floor;
+  floor_ = bounds.arrival_floor;
   interval_ = scene.hazard.interval;
   size_t nc = 1;
   for (int a = 0; a < dim - 1; ++a) {

@@ -13,7 +13,7 @@
 // the record ends before the crest has passed (a run stopped while the wave is still rising at the gauge).
 // A gauge's reading (read_gauge) asks more of the first crest: only what can be a wave counts. Samples before the
 // earliest time a wave can reach the gauge (t_min, probe/wave_bounds.h) are the gauge's noise; its noise floor
-// is the larger of three times their largest |eta| and the gauge's resolution (floor, dx / 100). The first
+// is the larger of three times their largest |eta| and the gauge's resolution (floor, dx / 1000). The first
 // crest is sought in the record from t_min on, and must rise above the noise floor; otherwise the gauge reports
 // no crest, with the reason.
 // Celerity between two gauges: c = (x_2 - x_1) / (t_2 - t_1) of their crests; the run's celerity is the

@@ -36,7 +36,8 @@ WaveBounds wave_bounds(const Scene& scene) {
   double g2 = 0;
   for (double c : scene.gravity) g2 += c * c;
   w.gravity = std::sqrt(g2);
-  w.floor = scene.domain.dx / 100;
+  w.floor = scene.domain.dx / 1000;
+  w.arrival_floor = scene.domain.dx / 100;
   bool moving_boundary = false;
   for (const BoundarySpec& b : scene.boundaries)
     if (b.json.contains("velocity"))

@@ -10,9 +10,12 @@
 //            distance d from the nearest source no earlier than t_min = d / c_max. A scene with no such body, or
 //            with a moving obstacle (a wave maker), has no bounded source: t_min = 0 everywhere (the water itself
 //            starts with the wave: a solitary wave, a mound, a dam break);
-//   floor    the smallest elevation a gauge resolves: dx / 100. A gauge reads the top particle of its grid
-//            column (probe/wave_gauge.cpp); in still water that top jitters by well under 1 % of dx (docs/waves.md,
-//            the lake at rest), so a rise below dx / 100 is not a wave the run resolved.
+//   floor    the smallest crest a gauge resolves: dx / 1000. A gauge reads the top particle of its grid column
+//            (probe/wave_gauge.cpp); in still water that top moves by about 3e-4 dx (the lake at rest over the
+//            Eqip Sermia profile at dx = 10 m: 2-3 mm in 20 s), so a rise below dx / 1000 is not a wave the run
+//            resolved;
+//   arrival_floor  the least rise that counts as the arrival of a wave on the hazard map: dx / 100, the scale of
+//            a free-surface disturbance a grid of spacing dx represents (hazard/hazard_map.h).
 #pragma once
 
 #include <vector>
@@ -25,7 +28,8 @@ struct WaveBounds {
   double gravity = 9.81;     // |g| [m/s^2]
   double h_max = 0;          // [m]
   double c_max = 0;          // [m/s]; 0 when the scene has no fluid
-  double floor = 0;          // [m]
+  double floor = 0;          // [m], a gauge's least crest
+  double arrival_floor = 0;  // [m], the hazard map's least arrival threshold
   bool bounded_source = false;
   // Each source: its horizontal lower and upper corner (dim - 1 coordinates each).
   std::vector<std::pair<std::vector<double>, std::vector<double>>> sources;

@@ -45,7 +45,8 @@ TEST(LabWaves, CoarseMechanismsConserveWaterAndFallMakesTheLargestWave) {
     runs[m] = run_lab(dir, m);
     const LabRun& r = runs[m];
     ASSERT_EQ(r.summary["status"], "completed") << m;
-    EXPECT_EQ(r.waves.header, (std::vector<std::string>{"gauge", "x", "amplitude", "arrival_time"})) << m;
+    EXPECT_EQ(r.waves.header, (std::vector<std::string>{"gauge", "x", "amplitude", "arrival_time", "earliest_arrival",
+                                                      "noise_floor", "reason"})) << m;
     ASSERT_EQ(r.waves.rows.size(), 5u) << m;
     const auto& mass = r.probes.at("water_mass");
     EXPECT_LE(std::abs(mass.back() - mass.front()), 1e-3 * mass.front()) << m;

@@ -43,7 +43,8 @@ TEST(WaveBounds, EarliestArrivalIsTheSourceDistanceOverTwiceTheLongWaveSpeed) {
   EXPECT_TRUE(b.bounded_source);
   EXPECT_NEAR(b.earliest_arrival({1200}), 600 / (2 * std::sqrt(kG * 40)), 1e-12);
   EXPECT_EQ(b.earliest_arrival({300}), 0.0);  // over the ice
-  EXPECT_DOUBLE_EQ(b.floor, 5.0 / 100);
+  EXPECT_DOUBLE_EQ(b.floor, 5.0 / 1000);
+  EXPECT_DOUBLE_EQ(b.arrival_floor, 5.0 / 100);
   EXPECT_TRUE(b.possible_celerity(std::sqrt(kG * 40)));
   EXPECT_FALSE(b.possible_celerity(-5));
   EXPECT_FALSE(b.possible_celerity(2.01 * std::sqrt(kG * 40)));
@@ -186,6 +187,76 @@ TEST(HostileOutputs, ShortCoarseCalvingRunReportsNoPhantomCrest) {
   EXPECT_TRUE(s["hazard"].contains("shores_reason"));
   EXPECT_FALSE(fs::exists(dir / "run/runup.csv"));
 }
+
+
+// Every shipped scene with water, run short and coarse as users try them first: what summary.json and waves.csv
+// report is physically possible, or absent with a reason. Bounds from theory: a first crest no earlier than the
+// earliest arrival (distance from the sources over c_max = 2 sqrt(g h_max)) and no higher than the domain's top
+// (water cannot leave it); a celerity in (0, c_max]; a 3D run-up never negative (a maximum height of inundated
+// land above the still level); a 2D run-up no lower than the still level by more than the surface's resolution
+// (dx/4: at t = 0 the shoreline is at the still level).
+struct ShortRun {
+  const char* scene;
+  std::vector<std::string> sets;
+};
+
+class HostileOutputsOfShippedScenes : public ::testing::TestWithParam<ShortRun> {};
+
+TEST_P(HostileOutputsOfShippedScenes, AreAbsentOrPhysicallyPossible) {
+  const ShortRun& c = GetParam();
+  TempDir dir;
+  std::vector<std::string> args = {"run", source_path(std::string("scenes/") + c.scene + ".json"), "--out", dir / "run",
+                                   "--quiet", "--set", "output.frames=false"};
+  for (const std::string& s : c.sets) args.insert(args.end(), {"--set", s});
+  const CliResult r = run_cdmpm(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json s = read_json(dir / "run/summary.json");
+  const nlohmann::json resolved = read_json(dir / "run/scene.resolved.json");
+  const double top = resolved["domain"]["size"].back().get<double>(), dx = resolved["domain"]["dx"].get<double>();
+  if (s.contains("wave_bounds")) {
+    const double c_max = s["wave_bounds"]["c_max"].get<double>();
+    auto possible = [&](const nlohmann::json& v) { return v.is_null() || (v.get<double>() > 0 && v.get<double>() <= c_max); };
+    EXPECT_TRUE(possible(s["celerity"])) << s["celerity"];
+    for (const auto& p : s["celerity_pairs"]) EXPECT_TRUE(possible(p["celerity"])) << p.dump();
+    const CsvTable waves = read_csv_table(dir / "run/waves.csv");
+    const auto amplitude = waves.numbers("amplitude"), arrival = waves.numbers("arrival_time"),
+               earliest = waves.numbers("earliest_arrival");
+    const auto reason = waves.strings("reason");
+    for (size_t i = 0; i < amplitude.size(); ++i) {
+      if (std::isnan(amplitude[i])) {
+        EXPECT_EQ(reason[i].rfind("not arrived: ", 0), 0u) << waves.rows[i][0];
+        continue;
+      }
+      EXPECT_GE(arrival[i], earliest[i]) << waves.rows[i][0];
+      EXPECT_GT(amplitude[i], 0) << waves.rows[i][0];
+      EXPECT_LT(amplitude[i], top) << waves.rows[i][0];
+    }
+  }
+  if (s.contains("hazard")) {
+    const nlohmann::json& h = s["hazard"];
+    if (h.contains("runup")) EXPECT_TRUE(h["runup"].is_null() || h["runup"].get<double>() >= 0) << h["runup"];
+    if (h.contains("shores"))
+      for (const auto& shore : h["shores"])
+        EXPECT_TRUE(shore["runup"].is_null() || shore["runup"].get<double>() >= -dx / 4) << shore.dump();
+    if (!h["max_elevation"].is_null()) EXPECT_LT(h["max_elevation"]["elevation"].get<double>(), top);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ShortAndCoarse, HostileOutputsOfShippedScenes,
+    ::testing::Values(ShortRun{"calving_front_2d", {"parameters.dx=10", "time.end=8"}},
+                      ShortRun{"eqip_sermia_3d", {"parameters.dx=40", "time.end=12"}},
+                      ShortRun{"eqip_sermia_block_2d", {"parameters.dx=20", "time.end=12"}},
+                      ShortRun{"eqip_sermia_wedge_2d", {"parameters.dx=20", "time.end=6"}},
+                      ShortRun{"lab_gf_2d", {"parameters.cells_per_h=6", "time.end=1"}},
+                      ShortRun{"lab_cs_2d", {"parameters.cells_per_h=6", "time.end=1"}},
+                      ShortRun{"wave_celerity_2d", {"parameters.cells_per_h=8", "time.end=1.5"}},
+                      ShortRun{"solitary_runup_2d", {"parameters.cells_per_h=6", "time.end=3"}},
+                      ShortRun{"absorbing_packet_2d", {"parameters.cells_per_h=6", "time.end=4"}},
+                      ShortRun{"lake_at_rest_2d", {"parameters.dx=20", "time.end=5"}},
+                      ShortRun{"sliding_block_2d", {"time.end=2"}},
+                      ShortRun{"calving_3d", {"parameters.cells_per_H=6", "time.end=1"}}),
+    [](const ::testing::TestParamInfo<ShortRun>& info) { return std::string(info.param.scene); });
 
 }  // namespace
 }  // namespace cdmpm::testing
