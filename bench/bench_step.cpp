@@ -5,7 +5,7 @@
 // conditions, g2p fused with the constitutive update (with the Cam Clay return mapping for ice) and the
 // speed reduction. Scene setup (seeding the particles) and one warm-up cycle are outside the timed loop.
 //
-//   water2d/T    2D still block of water, 4 particles per cell             (issue 4 size: 1M particles)
+//   water2d/T    2D still block of water, 4 particles per cell             (benchmark size: 1M particles)
 //   ice2d/T      2D Cam Clay ice block yielding in extension every step    (1M)
 //   water3d/T    3D still block of water, 8 particles per cell             (2M)
 //   ice3d/T      3D Cam Clay ice block yielding in extension every step    (2M)
