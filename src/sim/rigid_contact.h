@@ -32,7 +32,7 @@
 // water there the body's velocity, tangential components included, so a layer of water about a kernel width
 // thick beside the body was dragged with it, and the body's pressure, a penalty on the volume change the grid
 // imposed on it, carried the buoyancy with a lag: a submerged block of density 920 in water rose at a quarter to
-// two thirds of the potential-flow acceleration (docs/validation.md, buoyancy). With the contact and XPIC(4) on the
+// two thirds of the potential-flow acceleration (docs/changelog.md, "Buoyancy coupling"). With the contact and XPIC(4) on the
 // water the block rises within 9 % at D/16. Known limits (docs/validation.md, "Buoyancy-driven motions"): a
 // surfacing body keeps a film of water one cell deep on its top, which does not drain, so it floats that much too
 // deep; and the part of a face's water pressure that the shares pass to the body depends on where the face lies

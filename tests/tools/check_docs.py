@@ -44,7 +44,9 @@ PLACEHOLDER = re.compile(r'[*?{}<>$]|\bDIR\b|NNNN|\bN\b|_X_|SCENE|RUN|OUT|FOLDER
 
 
 def tracked_files(root):
-    out = subprocess.run(['git', '-C', root, 'ls-files', '-z'], check=True,
+    # Tracked files and new ones not yet added (but not the ignored build and output folders).
+    out = subprocess.run(['git', '-C', root, 'ls-files', '-z', '--cached', '--others', '--exclude-standard'],
+                         check=True,
                          capture_output=True).stdout.decode('utf-8', 'replace')
     return [f for f in out.split('\0') if f]
 

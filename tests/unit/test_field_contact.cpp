@@ -8,7 +8,7 @@
 // node's momentum is conserved; where they separate nothing changes. Tolerances: a handful of floating-point
 // operations on numbers of order 10, so 1e-12.
 // IceRise.*: the rise criterion for an unbreakable elastic ice block (the scene's E = 1e8 Pa; at 1e9 Pa, with ten
-// times the steps, the water's XPIC loses more momentum and the block rises 34 % short: docs/validation.md, buoyancy,
+// times the steps, the water's XPIC loses more momentum and the block rises 34 % short: docs/changelog.md, "Buoyancy coupling",
 // "The elastic ice block in a field of its own"): released at rest 1 m under still water, it
 // starts rising within 15 % of the potential-flow acceleration (rho_w - rho_b) V g / (rho_b V + C_A rho_w pi D^2/4),
 // C_A = 1.51 for a square (DNV-RP-C205), rho_w the water's density at the block (rise_reference.h), at D/16 (not
@@ -167,7 +167,7 @@ TEST(IceRise, NeutrallyBuoyantElasticBlockInContactStaysAtRest) {
 // the water steps at its own step, the ice's field sub-steps. The elastic compliance changes the buoyant rise by
 // about rho g D / E ~ 1e-5, so the block must rise as the softer one does, within the 15 % of potential flow
 // at D/8. Stepping the water at the ice's step instead loses momentum to XPIC at every step: 0.177 m/s^2 at D/8
-// (docs/validation.md, "Multi-rate stepping").
+// (docs/changelog.md, "Multi-rate stepping").
 TEST(IceRise, LabStiffBlockWithMultiRateSteppingRisesAtPotentialFlowAcceleration) {
   const double a_theory = testing::scene_rise_reference();
   const double a = ice_rise_acceleration(0.05, {"parameters.E=1e9", "time.multi_rate=true"});

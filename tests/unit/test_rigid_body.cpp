@@ -410,7 +410,7 @@ const std::vector<std::string> contact_sets = {"materials.block.contact=true", "
 
 // In contact the rise approaches potential flow under refinement: closer at D/16 than at D/8 (0.29 and 0.34 m/s^2
 // against 0.415). In the shared field the same XPIC(4) gives 0.165 and 0.241 m/s^2 (D/8, D/16), the contact with
-// APIC's transfer 0.26 and 0.29 m/s^2 (docs/validation.md, buoyancy).
+// APIC's transfer 0.26 and 0.29 m/s^2 (docs/changelog.md, "Buoyancy coupling").
 TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement) {
   const double a_theory = testing::scene_rise_reference();
   const double a8 = rise_acceleration(0.05, contact_sets), a16 = rise_acceleration(0.025, contact_sets);
