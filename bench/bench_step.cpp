@@ -28,7 +28,7 @@
 //       --benchmark_report_aggregates_only=true                             # the issue's sizes (one line)
 //   CDMPM_BENCH_PARTICLES=1000000 build/bench/cdmpm_bench                   # every case at about 1M
 // The environment variable CDMPM_BENCH_PARTICLES sets the approximate particle count of every case (at least
-// 1000), or "issue" for each case's issue-4 size; default 250000. The count is rounded so that the bodies
+// 1000), or "issue" for each case's full size; default 250000. The count is rounded so that the bodies
 // are whole numbers of cells.
 #include <benchmark/benchmark.h>
 #include <omp.h>

@@ -31,7 +31,7 @@ SELF = 'tests/tools/check_docs.py'
 CXX = ('.h', '.cpp', '.c', '.hpp')
 SESSION = re.compile(r'session', re.IGNORECASE)
 MPI_SESSION = re.compile(r'(MPI_Session|mpi::Session|MPI::Session)')
-ISSUE = re.compile(r'\bissues?\s*(?:no\.?\s*)?#?\d+(?:\s*(?:,|and|or)\s*#?\d+)*', re.IGNORECASE)
+ISSUE = re.compile(r'\bissues?[\s-]*(?:no\.?\s*)?#?\d+(?:\s*(?:,|and|or)\s*#?\d+)*', re.IGNORECASE)
 # "#20" as a reference: a hash and digits after a space or an opening bracket, not a colour
 # ("#000000"), a C preprocessor line or a Markdown heading.
 HASH_REF = re.compile(r'(?:(?<=\s)|(?<=\()|(?<=\[)|^)#\d{1,5}\b(?![0-9a-fA-F])')
