@@ -107,7 +107,7 @@ void resume_inputs(const std::string& dir, std::string& scene_path, std::vector<
 int main(int argc, char** argv) {
   cdmpm::choose_omp_wait_policy(argv);  // may execute the program again (parallel/omp_wait_policy.h)
 #ifdef CDMPM_MPI
-  const cdmpm::mpi::Session mpi_session(argc, argv);  // `mpirun -np N cdmpm run SCENE` (docs/architecture.md)
+  const cdmpm::mpi::Session mpi_runtime(argc, argv);  // `mpirun -np N cdmpm run SCENE` (docs/architecture.md)
 #endif
   CLI::App app{"cdmpm: Material Point Method simulator of glacier calving and the tsunamis it raises"};
   app.set_version_flag("--version", std::string("cdmpm ") + CDMPM_VERSION);

@@ -5,7 +5,7 @@
 // conditions, g2p fused with the constitutive update (with the Cam Clay return mapping for ice) and the
 // speed reduction. Scene setup (seeding the particles) and one warm-up cycle are outside the timed loop.
 //
-//   water2d/T    2D still block of water, 4 particles per cell             (issue 4 size: 1M particles)
+//   water2d/T    2D still block of water, 4 particles per cell             (benchmark size: 1M particles)
 //   ice2d/T      2D Cam Clay ice block yielding in extension every step    (1M)
 //   water3d/T    3D still block of water, 8 particles per cell             (2M)
 //   ice3d/T      3D Cam Clay ice block yielding in extension every step    (2M)
@@ -28,7 +28,7 @@
 //       --benchmark_report_aggregates_only=true                             # the issue's sizes (one line)
 //   CDMPM_BENCH_PARTICLES=1000000 build/bench/cdmpm_bench                   # every case at about 1M
 // The environment variable CDMPM_BENCH_PARTICLES sets the approximate particle count of every case (at least
-// 1000), or "issue" for each case's issue-4 size; default 250000. The count is rounded so that the bodies
+// 1000), or "issue" for each case's full size; default 250000. The count is rounded so that the bodies
 // are whole numbers of cells.
 #include <benchmark/benchmark.h>
 #include <omp.h>

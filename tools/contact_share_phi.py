@@ -1,5 +1,5 @@
 """contact_share_phi.py - the part of a flat face's water pressure force that a contact share passes to the body,
-as a function of where the face lies between two grid planes (docs/validation.md, "The stall").
+as a function of where the face lies between two grid planes (docs/changelog.md, "The stall").
 
 A half-space of water at pressure p against a flat face pushes the grid node at signed distance d from the face
 (d > 0 outside the body, in cells) with the force p w(d), w the quadratic B-spline; the nodes' forces sum to p.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""float_draft.py - how a buoyant body comes to float (issue 20's terminal criterion: the Archimedes draft within
+"""float_draft.py - how a buoyant body comes to float (the float criterion: the Archimedes draft within
 5 %) from a run's probes.csv: per time interval, the mean draft (the water level of a gauge far from the body
 less the body's bottom, centre - H/2), its error against the Archimedes draft (rho_b / rho_w) H, the body's top
 against the level, its largest vertical speed, and the level itself (a falling level is water lost).

@@ -1,5 +1,5 @@
 """same_particles.py - whether two particle frames hold the same particle state, bit for bit: the frames of a
-distributed run (a .pvtu joining per-rank .vtu pieces) against one process's .vtu (issue 18, docs/architecture.md).
+distributed run (a .pvtu joining per-rank .vtu pieces) against one process's .vtu (docs/architecture.md).
 The particles of each frame are sorted by their id; then the positions and every point array must be equal
 bytewise (NaN included), and the frames' field data (TimeValue, material_names; of the first piece) equal.
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """sweep_sliding_block.py - iceberg length against buoyancy: runs scenes/sliding_block_2d.json for a set of
 submergence ratios D/H and compares the first iceberg's length L/H with the bending models of the reference
-paper (issue 3):
+paper:
     linear (reference paper):  L/H = 2 sigma_t / (3 rho_i g H (1 - D/H))
     cantilever, full buoyancy:  L/H = sqrt(sigma_t / (3 g (rho_i H - rho_w D)))
 sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) measures that the MPM

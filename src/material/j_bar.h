@@ -14,7 +14,7 @@
 // The state J of each particle is unchanged; only the stress of p2g uses Jbar. So nothing resists one particle's J
 // where the flow converges on it more than on its cell: beside the corners of a rising block at dx = D/32 single
 // particles reach J = 0.80 by 0.2 s, and the time step, set by the stiffest particle's own J, halves
-// (docs/validation.md, session 25).
+// (docs/changelog.md, "Buoyancy coupling", 2026-12-05: the stall at D/32).
 #pragma once
 
 #include <algorithm>

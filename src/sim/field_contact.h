@@ -18,7 +18,7 @@
 // Why: in the one shared field the nodes beside an elastic block carry both the block and the water that sinks
 // past it, and the block's shear passes that drag into the whole block: an elastic ice block of density 920
 // released in water rose at 69 % of the potential-flow acceleration at D/16 with J-bar and FLIP on the water
-// (docs/validation.md, buoyancy). The contact is node by node, so the result does not depend on the thread count.
+// (docs/changelog.md, "Buoyancy coupling"). The contact is node by node, so the result does not depend on the thread count.
 // One process only (refused under mpirun, sim/simulation.cpp: the halo exchange carries one field); a rigid body in
 // contact beside it is refused by the scene loader (its contact meets the shared field only).
 // With the scene key time.multi_rate the field sub-steps at its own stable step inside the water's (subcycle).

@@ -26,7 +26,7 @@
 // J_p <- min(1, J_p (1 + dt tr C_p)), so the particle's pressure (material/material.h, Rigid) resists other material
 // flowing into the body. The pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the
 // water has left (the grid diverging around it) resists the water's return at once, without first undoing a fictitious
-// expansion. (Known limit, docs/validation.md, buoyancy: through the shared nodes the body drags the water beside it,
+// expansion. (Known limit, docs/changelog.md, "Buoyancy coupling": through the shared nodes the body drags the water beside it,
 // tangentially too, and the water's own transfers lose momentum at every step, so buoyancy-driven motions are slow at
 // coarse resolution. A pressure taken instead from the water around the body, continuous across its surface, fed back
 // on the water it compressed and made a surfacing body unstable. The contact removes the drag; a body that surfaces in

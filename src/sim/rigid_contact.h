@@ -32,8 +32,8 @@
 // water there the body's velocity, tangential components included, so a layer of water about a kernel width
 // thick beside the body was dragged with it, and the body's pressure, a penalty on the volume change the grid
 // imposed on it, carried the buoyancy with a lag: a submerged block of density 920 in water rose at a quarter to
-// two thirds of the potential-flow acceleration (docs/validation.md, buoyancy). With the contact and XPIC(4) on the
-// water the block rises within 9 % at D/16. Known limits (docs/validation.md, "Session 24" and session 25): a
+// two thirds of the potential-flow acceleration (docs/changelog.md, "Buoyancy coupling"). With the contact and XPIC(4) on the
+// water the block rises within 9 % at D/16. Known limits (docs/validation.md, "Buoyancy-driven motions"): a
 // surfacing body keeps a film of water one cell deep on its top, which does not drain, so it floats that much too
 // deep; and the part of a face's water pressure that the shares pass to the body depends on where the face lies
 // between grid planes (0.755 to 0.995 of it, tools/contact_share_phi.py): over the second half of each cell a

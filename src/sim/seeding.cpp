@@ -228,7 +228,7 @@ class BodySeeder {
   // the lattice spacing (J(p) of the material's initial_state; for the Tait water
   // p = K/gamma [(1 + (gamma - 1) rho0 g d / K)^(gamma/(gamma-1)) - 1]). p = rho0 g d instead leaves every column
   // lighter than the pressure under it by about rho0 g d / (2K), and the water then rings at its vertical acoustic
-  // period (docs/validation.md, "What the water does around the rising blob").
+  // period (docs/changelog.md, "What the water does around the rising blob").
   std::vector<double> column_pressures(const std::vector<DVec<dim>>& column, double level, double rho0_g) const {
     constexpr int up = vertical_axis<dim>;
     const auto slope = [&](double p) {

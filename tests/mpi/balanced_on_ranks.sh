@@ -1,5 +1,5 @@
 #!/bin/sh
-# balanced_on_ranks.sh - the load-balance criterion of issue 18: a distributed run on RANKS ranks writes the files of
+# balanced_on_ranks.sh - the load-balance criterion: a distributed run on RANKS ranks writes the files of
 # one process byte for byte (ranks_match_one_process.sh) and, after its first repartition, the particle imbalance
 # max / mean over the ranks measured at every particle sort stays below LIMIT (summary.json, "distributed":
 # max_imbalance_after_first_repartition; parallel/domain.h).

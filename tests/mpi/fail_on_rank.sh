@@ -1,7 +1,7 @@
 #!/bin/sh
 # fail_on_rank.sh - a rank that fails to allocate ends the whole distributed run with a message naming the rank and
 # the cause and a non-zero exit code; the frames and checkpoint written before are intact, and resuming from them
-# ends with the files of one process's straight run, byte for byte (issue 18, docs/architecture.md). The failure is
+# ends with the files of one process's straight run, byte for byte (docs/architecture.md). The failure is
 # injected (run/fault_injection.h): rank FAIL_RANK throws std::bad_alloc at the end of step FAIL_STEP.
 #
 # usage: fail_on_rank.sh SERIAL_CDMPM MPI_CDMPM SCENE WORK_DIR RANKS FAIL_RANK FAIL_STEP T_END [--set ...]

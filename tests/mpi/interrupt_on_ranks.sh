@@ -2,7 +2,7 @@
 # interrupt_on_ranks.sh - Ctrl-C (SIGINT to mpirun) stops a distributed run with a checkpoint, as one process does
 # (run/interrupt.h: mpirun sends SIGTERM to every rank, which all stop after the same step and write the
 # checkpoint), with a non-zero exit code; resumed on THEN_RANKS it ends with the files of one process's straight run,
-# byte for byte (issue 18, docs/architecture.md).
+# byte for byte (docs/architecture.md).
 #
 # usage: interrupt_on_ranks.sh SERIAL_CDMPM MPI_CDMPM SCENE WORK_DIR RANKS THEN_RANKS T_END FRAME [--set ...]
 #   The signal is sent once the frame file FRAME (e.g. particles_0003.vtu) exists.

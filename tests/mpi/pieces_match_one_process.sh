@@ -2,7 +2,7 @@
 # pieces_match_one_process.sh - a distributed run's frames, written as per-rank .vtu pieces under one .pvtu per
 # frame (listed in particles.pvd), hold one process's particle state bit for bit (tools/same_particles.py: every
 # array of the particles sorted by id), at the same times; every other file of one process's run (probes.csv, the
-# hazard products, ...) is byte-identical (issue 18, docs/architecture.md). Not checkpoint.bin, which lists the
+# hazard products, ...) is byte-identical (docs/architecture.md). Not checkpoint.bin, which lists the
 # frames written, here the .pvtu files (the rank-count tests compare it byte for byte with --gather-output).
 #
 # usage: pieces_match_one_process.sh SERIAL_CDMPM MPI_CDMPM SCENE WORK_DIR "RANKS" [--set key=value ...]

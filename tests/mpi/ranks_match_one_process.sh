@@ -1,5 +1,5 @@
 #!/bin/sh
-# ranks_match_one_process.sh - a distributed run gives the files of one process (docs/architecture.md, issue 18).
+# ranks_match_one_process.sh - a distributed run gives the files of one process (docs/architecture.md).
 #
 # usage: ranks_match_one_process.sh SERIAL_CDMPM MPI_CDMPM SCENE WORK_DIR "RANKS" [--set key=value ...]
 # Runs SCENE once with SERIAL_CDMPM (a build without MPI) and then with `mpirun -np N MPI_CDMPM` for every N in

@@ -1,7 +1,7 @@
 #!/bin/sh
 # resume_from_pieces.sh - a distributed run's per-rank checkpoint (a manifest checkpoint.bin and one piece
 # checkpoint_S_rR.bin per rank, io/checkpoint.h) resumes on another number of ranks and in one process, and the
-# run ends with the files of one process's straight run, byte for byte (issue 18).
+# run ends with the files of one process's straight run, byte for byte.
 #
 # usage: resume_from_pieces.sh SERIAL_CDMPM MPI_CDMPM SCENE WORK_DIR T1 T2 T_END [--set ...]
 #   np 2 to T1 (pieces), resumed on np 3 to T2 (pieces), resumed by SERIAL_CDMPM to T_END (one file). After each

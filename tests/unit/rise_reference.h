@@ -1,11 +1,11 @@
-// rise_reference.h - issue 20's reference for the rise scenes (scenes/rigid_rise_2d.json, rigid_rise_contact_2d.json,
+// rise_reference.h - the potential-flow reference for the rise scenes (scenes/rigid_rise_2d.json, rigid_rise_contact_2d.json,
 // ice_rise_contact_2d.json: a 0.4 m square block centred 1 m under still water): the potential-flow acceleration of a
 // body released at rest,
 //   a = (rho_w - rho_b) V g / (rho_b V + C_A rho_w pi D^2 / 4),   C_A = 1.51 for a square (DNV-RP-C205, table A-1),
 // with rho_w the density of the scenes' water where the block is: Tait water of bulk modulus K is compressed by its own
 // weight (hydrostatic_column.h), 1009.6 kg/m^3 at 1 m depth for the scenes' K = 1e6 Pa, so the displaced water weighs
 // 1 % more than at rho0 = 1000 and the net buoyancy of a block of density 920 is 12 % larger: 0.415 m/s^2 instead of
-// the 0.373 of rho_w = 1000 (docs/validation.md, buoyancy, "Session 33"). A block of density rho_w(1 m) is
+// the 0.373 of rho_w = 1000 (docs/validation.md, "Buoyancy-driven motions"). A block of density rho_w(1 m) is
 // neutrally buoyant: a = 0.
 #pragma once
 

@@ -1,5 +1,5 @@
 // test_absorbing_layer.cpp - the "absorbing_layer" boundary (boundary/absorbing_layer.cpp): water waves leave the
-// domain reflecting less than 5 % of their amplitude (issue 20's bound), for
+// domain reflecting less than 5 % of their amplitude (the acceptance bound), for
 //   - a long wave: the Boussinesq solitary wave of H/h = 0.1 (effective k h = sqrt(3 H / 4 h) = 0.27),
 //     scenes/absorbing_solitary_2d.json;
 //   - a short wave: a packet of k h ~ 1 released from rest, scenes/absorbing_packet_2d.json, whose carrier's

@@ -1,4 +1,4 @@
-// test_checkpoint_validation.cpp - issue 19, checkpoints: any single byte flipped and any truncation is refused
+// test_checkpoint_validation.cpp - hostile input, checkpoints: any single byte flipped and any truncation is refused
 // (CRC-32), length fields forged with a valid checksum are refused before any allocation, forged values
 // (NaN or far positions, bad material ids, non-positive mass or J, bad time, frame names leaving the folder)
 // are refused, and --resume with another scene (--set materials.water.density=500) names the section that

@@ -1,4 +1,4 @@
-// test_eqip_sermia_2d.cpp - the Eqip Sermia calving in the test suite (issue 17: "a coarse 2D version in the test
+// test_eqip_sermia_2d.cpp - the Eqip Sermia calving in the test suite (the acceptance criteria: "a coarse 2D version in the test
 // suite in under 3 minutes that produces a calving event and a wave"). scenes/eqip_sermia_2d.json as shipped: the
 // 200 m cliff grounded in 100 m of water, settled for 10 s, its water-filled crevasses, and the water's pressure in
 // the damaged band (ice key "hydrofracture", crack water level 200 m; docs/eqip_sermia.md#hydrofracture-through-the-

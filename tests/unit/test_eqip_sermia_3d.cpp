@@ -1,5 +1,5 @@
-// test_eqip_sermia_3d.cpp - the paired 2D and 3D runs of the Eqip Sermia fjord (issue 17,
-// docs/eqip_sermia.md#2d-to-3d-from-paired-runs), coarse: the same driven block (a 60 m x 200 m block of ice
+// test_eqip_sermia_3d.cpp - the paired 2D and 3D runs of the Eqip Sermia fjord
+// (docs/eqip_sermia.md#2d-to-3d-from-paired-runs), coarse: the same driven block (a 60 m x 200 m block of ice
 // toppling about its toe along a prescribed tilt, rigid key "motion") spans the fjord's width in 2D
 // (scenes/eqip_sermia_block_2d.json) and is an 80 m wide section of the front in 3D (scenes/eqip_sermia_3d.json),
 // here over the first 1.24 km of the fjord (x+ wall at 1400 m, its reflection back at the 500 m gauge after

@@ -7,8 +7,8 @@
 // velocities become the node's centre-of-mass velocity (at full share), the tangential ones are untouched, and the
 // node's momentum is conserved; where they separate nothing changes. Tolerances: a handful of floating-point
 // operations on numbers of order 10, so 1e-12.
-// IceRise.*: issue 20's criterion for an unbreakable elastic ice block (the scene's E = 1e8 Pa; at 1e9 Pa, with ten
-// times the steps, the water's XPIC loses more momentum and the block rises 34 % short: docs/validation.md, buoyancy,
+// IceRise.*: the rise criterion for an unbreakable elastic ice block (the scene's E = 1e8 Pa; at 1e9 Pa, with ten
+// times the steps, the water's XPIC loses more momentum and the block rises 34 % short: docs/changelog.md, "Buoyancy coupling",
 // "The elastic ice block in a field of its own"): released at rest 1 m under still water, it
 // starts rising within 15 % of the potential-flow acceleration (rho_w - rho_b) V g / (rho_b V + C_A rho_w pi D^2/4),
 // C_A = 1.51 for a square (DNV-RP-C205), rho_w the water's density at the block (rise_reference.h), at D/16 (not
@@ -142,8 +142,8 @@ TEST(IceRise, ElasticBlockInContactRiseApproachesPotentialFlowUnderRefinement) {
   EXPECT_LT(std::abs(a16 - a_theory), std::abs(a8 - a_theory));
 }
 
-// Issue 20's criterion: within 15 % at D/16. Not met: 0.339 m/s^2, 18 % short of the reference at the water's density
-// where the block is (it passed against 0.373, uncompressed water's, until session 33: docs/validation.md, buoyancy).
+// The rise criterion: within 15 % at D/16. Not met: 0.339 m/s^2, 18 % short of the reference at the water's density
+// where the block is (it passed against 0.373, uncompressed water's, until 2026-12-06: docs/validation.md, "Buoyancy-driven motions").
 TEST(IceRise, DISABLED_ElasticBlockInContactStartsRisingAtPotentialFlowAcceleration) {
   const double a_theory = testing::scene_rise_reference(), a16 = ice_rise_acceleration(0.025);
   std::printf("elastic ice block in contact: %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
@@ -151,10 +151,10 @@ TEST(IceRise, DISABLED_ElasticBlockInContactStartsRisingAtPotentialFlowAccelerat
 }
 
 // A block of the water's density where it is (1009.6 kg/m^3, rise_reference.h) is neutrally buoyant: it must not
-// accelerate, whatever its added mass. Bound: the acceleration band of issue 20's criterion for the block of density
+// accelerate, whatever its added mass. Bound: the acceleration band of the rise criterion for the block of density
 // 920, 15 % of its reference (0.062 m/s^2). The ice's own field passes 99.0 % of the displaced water's weight (the
 // block sinks at 0.031 m/s^2 at D/8, 0.044 at D/16); the rigid bodies' contact passes 96.7 % and its neutral block
-// sinks at 0.18-0.19 m/s^2 (test_rigid_body.cpp; docs/validation.md, buoyancy, "Session 33"). With the exchange
+// sinks at 0.18-0.19 m/s^2 (test_rigid_body.cpp; docs/validation.md, "Buoyancy-driven motions"). With the exchange
 // switched off the block in its own field feels no water and falls at g.
 TEST(IceRise, NeutrallyBuoyantElasticBlockInContactStaysAtRest) {
   const double band = 0.15 * testing::scene_rise_reference();
@@ -167,7 +167,7 @@ TEST(IceRise, NeutrallyBuoyantElasticBlockInContactStaysAtRest) {
 // the water steps at its own step, the ice's field sub-steps. The elastic compliance changes the buoyant rise by
 // about rho g D / E ~ 1e-5, so the block must rise as the softer one does, within the issue's 15 % of potential flow
 // at D/8. Stepping the water at the ice's step instead loses momentum to XPIC at every step: 0.177 m/s^2 at D/8
-// (docs/validation.md, "Multi-rate stepping").
+// (docs/changelog.md, "Multi-rate stepping").
 TEST(IceRise, LabStiffBlockWithMultiRateSteppingRisesAtPotentialFlowAcceleration) {
   const double a_theory = testing::scene_rise_reference();
   const double a = ice_rise_acceleration(0.05, {"parameters.E=1e9", "time.multi_rate=true"});

@@ -1,4 +1,4 @@
-// test_fuzz_inputs.cpp - issue 19: seeded hostile inputs run through the cdmpm program. Each case must end with
+// test_fuzz_inputs.cpp - seeded hostile inputs run through the cdmpm program. Each case must end with
 // exit 2 (bad input; 1 for I/O where noted) and a message on stderr, never a signal, never a hang (each run
 // under `timeout`, 20 s) and never more than 2 GiB of address space (`ulimit -v`; not in a sanitizer build,
 // whose shadow memory needs more). Scenes go through `cdmpm check`, checkpoints through `cdmpm run --resume`

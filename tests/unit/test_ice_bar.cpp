@@ -11,7 +11,7 @@
 // transition at a grip (or at a dog-bone shoulder) concentrates stress and fails there first.
 // The measured stress is the volume-weighted mean Kirchhoff tau_xx of the middle-section particles.
 // Expected (material/cohesive_cam_clay.h, CohesiveCamClay::uniaxial_strength<2>): the peak tensile stress is
-// the yield-surface strength sigma_t(M, beta, p0) within 5 % (issue 3; the discrete part of the error is
+// the yield-surface strength sigma_t(M, beta, p0) within 5 % (the acceptance band; the discrete part of the error is
 // the stress change of one time step, E' e' dt ~ 3 % of sigma_t), after the peak the stress falls
 // (softening), and the compressive strength exceeds the tensile one.
 #include <gtest/gtest.h>

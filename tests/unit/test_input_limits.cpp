@@ -1,4 +1,4 @@
-// test_input_limits.cpp - issue 19, scene input: deep nesting (file, --set, parameter expressions), a
+// test_input_limits.cpp - hostile input, scene files: deep nesting (file, --set, parameter expressions), a
 // directory or an unrepresentable number as the scene, escaping scene names, and a reused --out cleaned of the
 // previous run's files. Each must end with exit 2 and a message naming the file, never a crash.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// test_interrupt.cpp - issue 19, signals: SIGINT during the default scene ends the run at the end of a step
+// test_interrupt.cpp - signals: SIGINT during the default scene ends the run at the end of a step
 // with exit code 130, a checkpoint and summary.json status "interrupted"; --resume from there reaches the
 // same final particle state as a straight run, bit for bit. SIGTERM gives 143. After the first signal the
 // default action is back, so a second Ctrl-C kills at once.

@@ -1,4 +1,4 @@
-// test_lake_at_rest.cpp - the well-balanced bed (issue 17, sim/bed_layer.h): water at rest over the sloping
+// test_lake_at_rest.cpp - the well-balanced bed (sim/bed_layer.h): water at rest over the sloping
 // Eqip Sermia profile (scenes/lake_at_rest_2d.json) and over the same profile extruded into a channel with sloping
 // sides (scenes/lake_at_rest_3d.json, scenes/data/eqip_sermia_channel.asc) stays at rest.
 // What is asserted, at a coarse resolution, after the simulated time:

@@ -5,7 +5,7 @@
 // water floating at the draft of Archimedes' principle, and the initial rise of a submerged block against potential
 // flow, a = (rho_w - rho_b) V g / (m + m_a), m_a = C_A rho_w pi (D/2)^2, C_A = 1.51 for a square (DNV-RP-C205
 // table A-1; Brennen 1982: m_a = 4.754 rho_w (D/2)^2), rho_w the water's density at the block (rise_reference.h):
-// closer under refinement. Issue 20's criteria, not met yet (docs/validation.md, buoyancy), are disabled tests:
+// closer under refinement. The buoyancy criteria, not met yet (docs/validation.md, "Buoyancy-driven motions"), are disabled tests:
 // 15 % at D/16, a neutrally buoyant block at rest, and floating at the draft after rising.
 #include <gtest/gtest.h>
 
@@ -392,11 +392,11 @@ TEST(RigidBody, SubmergedBlockRiseApproachesPotentialFlowUnderRefinement) {
   EXPECT_LT(std::abs(a16 - a_theory), std::abs(a8 - a_theory));
 }
 
-// Issue 20's criterion: within 15 % of potential flow at D/16. The scene's water and block take their stress at
+// The rise criterion: within 15 % of potential flow at D/16. The scene's water and block take their stress at
 // the cell-mean J and a pure FLIP velocity update (j_bar, flip = 1: docs/water.md, "Buoyancy: J-bar and FLIP");
 // without them the block rises at 0.17 m/s^2 (D/16), with flip = 0.99 at 0.31 m/s^2 (the block's velocity is
 // noisy after 0.2 s with flip = 1). Not met: 0.346 m/s^2, 17 % short of the reference at the water's density where
-// the block is (it passed against 0.373, the reference of uncompressed water, until session 33).
+// the block is (it passed against 0.373, the reference of uncompressed water, until 2026-12-06).
 TEST(RigidBody, DISABLED_SubmergedBlockStartsRisingAtPotentialFlowAcceleration) {
   const double a_theory = testing::scene_rise_reference(), a16 = rise_acceleration(0.025);
   std::printf("rise acceleration %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
@@ -410,7 +410,7 @@ const std::vector<std::string> contact_sets = {"materials.block.contact=true", "
 
 // In contact the rise approaches potential flow under refinement: closer at D/16 than at D/8 (0.29 and 0.34 m/s^2
 // against 0.415). In the shared field the same XPIC(4) gives 0.165 and 0.241 m/s^2 (D/8, D/16), the contact with
-// APIC's transfer 0.26 and 0.29 m/s^2 (docs/validation.md, buoyancy).
+// APIC's transfer 0.26 and 0.29 m/s^2 (docs/changelog.md, "Buoyancy coupling").
 TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement) {
   const double a_theory = testing::scene_rise_reference();
   const double a8 = rise_acceleration(0.05, contact_sets), a16 = rise_acceleration(0.025, contact_sets);
@@ -420,8 +420,8 @@ TEST(RigidBody, BlockInContactWithXpicRiseApproachesPotentialFlowUnderRefinement
   EXPECT_LT(std::abs(a16 - a_theory), std::abs(a8 - a_theory));
 }
 
-// Issue 20's criterion for the block in contact: within 15 % of potential flow at D/16. Not met: 0.340 m/s^2, 18 %
-// short (it passed against 0.373 until session 33). What is short is the buoyancy the contact passes: the next test.
+// The rise criterion for the block in contact: within 15 % of potential flow at D/16. Not met: 0.340 m/s^2, 18 %
+// short (it passed against 0.373 until 2026-12-06). What is short is the buoyancy the contact passes: the next test.
 TEST(RigidBody, DISABLED_BlockInContactWithXpicRisesAtPotentialFlowAcceleration) {
   const double a_theory = testing::scene_rise_reference(), a16 = rise_acceleration(0.025, contact_sets);
   std::printf("rise acceleration in contact, XPIC(4): %.4f (D/16) m/s^2, potential flow %.4f m/s^2\n", a16, a_theory);
@@ -429,10 +429,10 @@ TEST(RigidBody, DISABLED_BlockInContactWithXpicRisesAtPotentialFlowAcceleration)
 }
 
 // A block of the water's density where it is (1009.6 kg/m^3) is neutrally buoyant: whatever its added mass it must
-// not accelerate. Bound: the acceleration band of issue 20's criterion for the block of density 920, 15 % of its
+// not accelerate. Bound: the acceleration band of the rise criterion for the block of density 920, 15 % of its
 // reference (0.062 m/s^2). Not met: in contact it sinks at 0.18-0.19 m/s^2 at D/8 and D/16 and 0.13 at D/32; the
 // contact passes it 96.5-97.7 % of the displaced water's weight at every resolution, and the missing 2.3-3.5 % is
-// 26-39 % of the net buoyancy of the block of density 920 (docs/validation.md, buoyancy, "Session 33").
+// 26-39 % of the net buoyancy of the block of density 920 (docs/validation.md, "Buoyancy-driven motions").
 TEST(RigidBody, DISABLED_NeutrallyBuoyantBlockInContactStaysAtRest) {
   std::vector<std::string> sets = contact_sets;
   sets.push_back(testing::neutral_block_density_set());
@@ -475,17 +475,17 @@ TEST(RigidBody, StirredPoolKeepsItsLevelWithInterpolatedContinuity) {
   EXPECT_LT(speed, 0.05);
 }
 
-// Issue 20's second criterion: a block of density 920 and height H_b released 0.05 m under the surface of still
+// The float criterion: a block of density 920 and height H_b released 0.05 m under the surface of still
 // water rises, reaches the surface and floats at the draft of Archimedes' principle, (920 / 1000) H_b, within 5 %
 // (the draft: the water level 0.2 m from the left wall less the block's bottom, over the last second). Not met
 // yet: without j_bar and flip the block stalls below its floating position (+19 %); with both (as
 // scenes/rigid_rise_2d.json) the run goes unstable when the block reaches the surface (at 0.9 s with flip = 1,
 // 3.1 s with 0.95; docs/water.md, "Buoyancy: J-bar and FLIP"). Set here: both with XPIC(4), which runs the 6 s
 // but leaves the block still creeping up, too deep (docs/water.md, "XPIC"). The block in contact (rigid key
-// `contact`) floats deeper still, +14 to +17 % (docs/validation.md, "Session 24"). The issue's own 0.4 m block
+// `contact`) floats deeper still, +14 to +17 % (docs/changelog.md, "Buoyancy coupling", 2026-12-05). The 0.4 m block
 // (scenes/rigid_rise_float_2d.json, 1 m deep) stays at the surface with the water's `continuity` "interpolated", but
 // 18-31 % too deep at D/16; with "apic" it comes to 4 cm under the level and sinks back while the water packs
-// (docs/validation.md, buoyancy, "session 26" and "session 28"). Run with
+// (docs/validation.md, "Buoyancy-driven motions"). Run with
 // --gtest_also_run_disabled_tests.
 TEST(RigidBody, DISABLED_SubmergedBlockRisesAndFloatsAtArchimedesDraft) {
   const double H_b = 0.2;

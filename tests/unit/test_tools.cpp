@@ -1,4 +1,4 @@
-// test_tools.cpp - the post-processing tools in tools/ behave as a user of a report expects (issue 21): a missing
+// test_tools.cpp - the post-processing tools in tools/ behave as a user of a report expects: a missing
 // or wrong input gives one line naming it and exit status 2, never a Python traceback; no tool writes into a
 // folder that holds committed files unless told to (--force); a plot goes where the user names.
 #include <gtest/gtest.h>
