@@ -126,14 +126,15 @@ void HazardMap<dim>::init(const Simulation<dim>& sim) {
   accumulate(sim);
 }
 
-// Land (1): dry at t = 0, held by no other material, the bed above the still water level; 2: held by another material.
+// Dry ground: dry at t = 0 and held by no other material; land (1) if its bed lies above the still water level,
+// else 3; 2: held by another material; 0: wet.
 template <int dim>
 void HazardMap<dim>::find_land(const std::vector<double>& held) {
   level_ = kNaN;
   for (size_t c = 0; c < columns(); ++c)
     if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
   for (size_t c = 0; c < columns(); ++c)
-    land_[c] = held[c] != 0 ? 2.0 : std::isnan(still_[c]) && !std::isnan(level_) && bed_[c] > level_ ? 1.0 : 0.0;
+    land_[c] = held[c] != 0 ? 2.0 : !std::isnan(still_[c]) ? 0.0 : !std::isnan(level_) && bed_[c] > level_ ? 1.0 : 3.0;
 }
 
 template <int dim>

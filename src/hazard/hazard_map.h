@@ -4,16 +4,18 @@
 // most once per hazard.interval, and accumulated over the run:
 //   still level      z_top at t = 0 (or hazard.still_level, for a scene that starts with a wave); a column
 //                    without water at t = 0 is dry,
-//   land             a column that held neither water nor any other material (ice, a rigid block) at t = 0 and
-//                    whose bed lies above the still water level (the highest still level of the wet columns):
-//                    initially dry ground, the only place where inundation and run-up are measured,
+//   dry ground       a column that held neither water nor any other material (ice, a rigid block) at t = 0: the
+//                    only place where inundation is measured (a flooded valley floor, a beach); land, dry ground
+//                    whose bed lies above the still water level (the highest still level of the wet columns), the
+//                    only place where run-up is (so it is never negative: a column that a calving block vacates
+//                    was held by ice),
 //   earliest arrival t_min = the column centre's distance from the wave sources / c_max (probe/wave_bounds.h):
 //                    before it no wave can have reached the column, so what the column shows then is its noise,
 //   noise            the largest |z_top - reference| before t_min (reference: the still level, or the bed of a
 //                    dry column),
 //   maximum          the largest z_top from t_min on and the first time it was reached: the maximum free-surface
 //                    elevation eta_max = max z_top - still level (wet columns) or the maximum inundation depth
-//                    d_max = max z_top - bed (land),
+//                    d_max = max z_top - bed (dry ground),
 //   arrival          the first time from t_min on that z_top exceeded the reference by the arrival threshold:
 //                    hazard.arrival_threshold if given, else the column's noise floor, the larger of 3 x its noise
 //                    and the gauges' resolution dx / 100 (a threshold tied to the run's own noise, not to dx alone:
@@ -83,6 +85,7 @@ class HazardMap {
   const std::vector<double>& earliest_arrival() const { return earliest_; }
   const std::vector<double>& noise() const { return noise_; }
   bool land(size_t column) const { return land_[column] == 1; }
+  bool dry_ground(size_t column) const { return land_[column] == 1 || land_[column] == 3; }
   double still_water_level() const { return level_; }
   const std::vector<Shore>& shores() const { return shores_; }
 
@@ -97,7 +100,7 @@ class HazardMap {
   double dx_ = 0, threshold_ = kNaN, floor_ = 0, interval_ = 0, last_sample_ = kNaN, level_ = kNaN;
   int n_[2] = {1, 1};
   std::vector<double> bed_, still_, max_top_, t_max_, arrival_, earliest_, noise_;
-  std::vector<double> land_;  // 1: land (see above), 2: held by another material at t = 0, else 0
+  std::vector<double> land_;  // 1: land, 3: other dry ground (see above), 2: held by another material at t = 0, 0: wet
   std::vector<double> top_, left_, right_;  // this sample: water top; 2D: leftmost and rightmost particle edge
   std::vector<Shore> shores_;
 };

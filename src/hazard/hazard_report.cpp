@@ -39,9 +39,9 @@ double elevation(const HazardMap<dim>& m, size_t c) {  // NaN for a dry or never
   return m.max_top()[c] - m.still_level()[c];
 }
 template <int dim>
-double depth(const HazardMap<dim>& m, size_t c) {  // maximum inundation depth of land (NaN elsewhere)
+double depth(const HazardMap<dim>& m, size_t c) {  // maximum inundation depth of dry ground (NaN elsewhere)
   // A particle beside the column centre may lie below the bed there: counted as 0.
-  return !m.land(c) ? std::nan("") : std::isnan(m.max_top()[c]) ? 0.0 : std::max(0.0, m.max_top()[c] - m.bed()[c]);
+  return !m.dry_ground(c) ? std::nan("") : std::isnan(m.max_top()[c]) ? 0.0 : std::max(0.0, m.max_top()[c] - m.bed()[c]);
 }
 
 // The largest elevation over the columns and where.
@@ -102,10 +102,10 @@ nlohmann::json shores_json(const HazardMap<2>& m) {
   return shores;
 }
 
-// 3D: the run-up is the highest bed of an inundated column (land, hazard_map.h: dry ground above the still water
-// level at t = 0, with a maximum depth above its arrival threshold) above the still water level (the highest
-// still level of the wet columns), so it is never negative; the inundated area is the number of such columns
-// times dx^2.
+// 3D: an inundated column is dry ground (hazard_map.h: dry at t = 0, held by no other material) with a maximum
+// depth above its arrival threshold; the inundated area is their number times dx^2. The run-up is the highest bed
+// of an inundated column of land (its bed above the still water level, the highest still level of the wet
+// columns) above that level, so it is never negative.
 nlohmann::json inundation_3d(const HazardMap<3>& m) {
   const double level = m.still_water_level();
   double runup = std::nan(""), deepest = 0;
@@ -116,7 +116,7 @@ nlohmann::json inundation_3d(const HazardMap<3>& m) {
     if (!(d > m.threshold(c))) continue;
     ++inundated;
     deepest = std::max(deepest, d);
-    if (larger(m.bed()[c] - level, runup)) runup = m.bed()[c] - level, at = c;
+    if (m.land(c) && larger(m.bed()[c] - level, runup)) runup = m.bed()[c] - level, at = c;
   }
   nlohmann::json j = {{"still_level", number(level)}, {"inundated_area", double(inundated) * m.dx() * m.dx()},
                       {"max_inundation_depth", deepest}, {"runup", number(runup)}};

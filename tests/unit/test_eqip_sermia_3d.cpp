@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -63,6 +64,38 @@ TEST(EqipSermia3D, FiniteSectionWaveSpreadsBeyondThe2DWave) {
   EXPECT_GT(a3.at("gauge_250m"), 1.0);
   EXPECT_LT(r250, 1.0);
   EXPECT_LT(r500 / r250, 0.85);
+}
+
+
+// The fjord at rest: the block held at its starting tilt (its motion a constant -30 deg), the absorbing layer, the
+// bed layer and the cliff's two boxes as in the scene, at dx = 40 m for 60 s. Water at rest must stay at rest:
+// every column's highest elevation (max_elevation.asc, from each column's earliest possible arrival on) and every
+// gauge's record within dx/20 of the still level. (Before the boxes' shared face and the box face on the sloping bed
+// were treated as such, the water at the cliff rose 3.85 m by 60 s, and in 6 s the corner of the cliff and the y+
+// absorbing layer rose 1.09 m.)
+TEST(EqipSermia3D, LakeAtRestWithTheBlockHeldStaysWithinATwentiethOfACellFor60s) {
+  TempDir dir;
+  constexpr double dx = 40;
+  const auto r = run_cdmpm({"run", source_path("scenes/eqip_sermia_3d.json"), "--out", dir / "held", "--quiet",
+                            "--set", "parameters.dx=40", "--set", "time.end=60", "--set", "output.frames=false",
+                            "--set", "bodies.0.rigid.motion=[[0, -30], [1, -30]]"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(dir / "held/max_elevation.asc");
+  std::string key;
+  double value = 0, nodata = -9999;
+  for (int k = 0; k < 6 && in >> key >> value; ++k)
+    if (key == "NODATA_value") nodata = value;
+  size_t cells = 0;
+  while (in >> value) {
+    if (value == nodata) continue;
+    ++cells;
+    EXPECT_LE(value, dx / 20) << "a column rose " << value << " m";
+  }
+  EXPECT_GT(cells, 1000u);
+  for (const auto& [name, eta] : read_probes(dir / "held/probes.csv")) {
+    if (name.rfind("gauge", 0) != 0 && name != "tide_gauge") continue;
+    for (double e : eta) EXPECT_LE(std::abs(e), dx / 20) << name;
+  }
 }
 
 }  // namespace
