@@ -154,7 +154,6 @@ class BoxObstacle final : public Boundary<dim> {
       }
       if (a < 0) break;
     }
-
     return pairs_;
   }
   // Adds node i's pair if i is a mirrored ghost of the box: inside it, at depth 1 or 2 below exactly one

@@ -79,12 +79,7 @@ void HazardMap<dim>::measure(const Simulation<dim>& sim) {
     for (size_t q = 0; q < n; ++q) {
       const Material& m = sim.materials[P.material[q]];
       if (!m.traits().fluid) continue;
-      size_t c = 0, stride = 1;
-      for (int a = 0; a < dim - 1; ++a) {
-        const int i = std::clamp(static_cast<int>(std::floor(P.x[q][a] / dx_)), 0, n_[a] - 1);
-        c += stride * static_cast<size_t>(i);
-        stride *= static_cast<size_t>(n_[a]);
-      }
+      const size_t c = column_of(P.x[q]);
       top[c] = std::max(top[c], static_cast<double>(P.x[q][up] + m.half_spacing));
       if (edges) {
         left[c] = std::min(left[c], static_cast<double>(P.x[q][0] - m.half_spacing));
@@ -103,6 +98,16 @@ void HazardMap<dim>::measure(const Simulation<dim>& sim) {
 }
 
 template <int dim>
+size_t HazardMap<dim>::column_of(const Vec<dim>& x) const {
+  size_t c = 0, stride = 1;
+  for (int a = 0; a < dim - 1; ++a) {
+    c += stride * static_cast<size_t>(std::clamp(static_cast<int>(std::floor(x[a] / dx_)), 0, n_[a] - 1));
+    stride *= static_cast<size_t>(n_[a]);
+  }
+  return c;
+}
+
+template <int dim>
 void HazardMap<dim>::init(const Simulation<dim>& sim) {
   if (!active_) return;
   measure(sim);
@@ -111,28 +116,27 @@ void HazardMap<dim>::init(const Simulation<dim>& sim) {
   // The columns that any material other than the fluids holds at t = 0 (ice, rigid blocks).
   std::vector<double> held(columns(), 0.0);
   const auto& P = sim.particles;
-  for (size_t q = 0; q < P.size(); ++q) {
-    if (sim.materials[P.material[q]].traits().fluid) continue;
-    size_t c = 0, stride = 1;
-    for (int a = 0; a < dim - 1; ++a) {
-      c += stride * static_cast<size_t>(std::clamp(static_cast<int>(std::floor(P.x[q][a] / dx_)), 0, n_[a] - 1));
-      stride *= static_cast<size_t>(n_[a]);
-    }
-    held[c] = 1;
-  }
+  for (size_t q = 0; q < P.size(); ++q)
+    if (!sim.materials[P.material[q]].traits().fluid) held[column_of(P.x[q])] = 1;
   global::max(held);
   find_land(held);
   find_shores();
   accumulate(sim);
 }
 
+// The still water level: the highest still level of the wet columns (NaN without any).
+template <int dim>
+void HazardMap<dim>::find_level() {
+  level_ = kNaN;
+  for (size_t c = 0; c < columns(); ++c)
+    if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
+}
+
 // Dry ground: dry at t = 0 and held by no other material; land (1) if its bed lies above the still water level,
 // else 3; 2: held by another material; 0: wet.
 template <int dim>
 void HazardMap<dim>::find_land(const std::vector<double>& held) {
-  level_ = kNaN;
-  for (size_t c = 0; c < columns(); ++c)
-    if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
+  find_level();
   for (size_t c = 0; c < columns(); ++c)
     land_[c] = held[c] != 0 ? 2.0 : !std::isnan(still_[c]) ? 0.0 : !std::isnan(level_) && bed_[c] > level_ ? 1.0 : 3.0;
 }
@@ -215,15 +219,11 @@ bool HazardMap<dim>::load_state(const std::vector<double>& s) {
   if (!(s[2] >= 0) || s.size() != 4 + 6 * nc + 5 * shores) return false;
   last_sample_ = s[3];
   size_t k = 4;
-  std::vector<double> land(nc);
   for (size_t c = 0; c < nc; ++c) {
     still_[c] = s[k++], max_top_[c] = s[k++], t_max_[c] = s[k++], arrival_[c] = s[k++], noise_[c] = s[k++];
-    land[c] = s[k++];
+    land_[c] = s[k++];
   }
-  land_ = land;
-  level_ = kNaN;
-  for (size_t c = 0; c < nc; ++c)
-    if (!std::isnan(still_[c]) && !(still_[c] <= level_)) level_ = still_[c];
+  find_level();
   find_shores();  // from the still levels, the land and the bed, as at the start
   if (shores_.size() != shores) return false;
   for (Shore& h : shores_) {

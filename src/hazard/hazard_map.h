@@ -72,10 +72,9 @@ class HazardMap {
   int count(int axis) const { return n_[axis]; }      // columns along horizontal axis `axis`
   double centre(size_t column, int axis) const;       // column centre [m]
   double dx() const { return dx_; }
-  // The arrival threshold of a column [m] (see above); fixed() whether the scene gave one.
+  // The arrival threshold of a column [m] (see above); fixed_threshold(): whether the scene gave one.
   double threshold(size_t column) const;
   bool fixed_threshold() const { return !std::isnan(threshold_); }
-  double floor() const { return floor_; }
   // Per column [m] and [s], NaN where not defined (still level of a dry column; never wet).
   const std::vector<double>& bed() const { return bed_; }
   const std::vector<double>& still_level() const { return still_; }
@@ -83,7 +82,6 @@ class HazardMap {
   const std::vector<double>& time_of_max() const { return t_max_; }
   const std::vector<double>& arrival() const { return arrival_; }
   const std::vector<double>& earliest_arrival() const { return earliest_; }
-  const std::vector<double>& noise() const { return noise_; }
   bool land(size_t column) const { return land_[column] == 1; }
   bool dry_ground(size_t column) const { return land_[column] == 1 || land_[column] == 3; }
   double still_water_level() const { return level_; }
@@ -94,6 +92,8 @@ class HazardMap {
   void accumulate(const Simulation<dim>& sim);
   void waterline(const Simulation<dim>& sim, Shore& s) const;
   void find_shores();
+  size_t column_of(const Vec<dim>& x) const;  // the column holding point x (clamped to the domain's columns)
+  void find_level();                          // level_ from the still levels
   void find_land(const std::vector<double>& held);
 
   bool active_ = false;

@@ -33,8 +33,6 @@ bool larger(double v, double best) { return !std::isnan(v) && !(v <= best); }
 nlohmann::json number(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
 
 template <int dim>
-bool wet_at_start(const HazardMap<dim>& m, size_t c) { return !std::isnan(m.still_level()[c]); }
-template <int dim>
 double elevation(const HazardMap<dim>& m, size_t c) {  // NaN for a dry or never wet column
   return m.max_top()[c] - m.still_level()[c];
 }

@@ -1,6 +1,6 @@
 // hazard_report.h - the hazard products of a run, written at its end from its hazard record (hazard_map.h):
-//   2D  hazard.csv: per column x, bed, still_level, max_elevation, time_of_max, arrival_time, max_depth (land
-//       only), earliest_arrival, arrival_threshold (docs/outputs in docs/scenes.md#hazard), and runup.csv: per
+//   2D  hazard.csv: per column x, bed, still_level, max_elevation, time_of_max, arrival_time, max_depth (dry
+//       ground only), earliest_arrival, arrival_threshold (docs/outputs in docs/scenes.md#hazard), and runup.csv: per
 //       shore its direction, still level, run-up, where and when, inundation extent and when (not written
 //       without a shore: the summary's "shores_reason" says so);
 //   3D  ESRI ASCII rasters (the format of the terrain input, terrain/terrain_file.h) max_elevation.asc,

@@ -14,11 +14,6 @@ std::string metres(double v) {
   return os.str();
 }
 
-// The level of a liquid body: its solitary wave's still level, surface_level, or its shape's top.
-double body_level(const BodySpec& b, int up) {
-  return b.solitary ? b.solitary->still_level : b.surface_level.value_or(b.shape.upper(up));
-}
-
 // The liquid body whose horizontal extent holds `where` (dim - 1 coordinates), if any.
 const BodySpec* liquid_under(const Scene& s, const std::vector<double>& where) {
   for (const BodySpec& b : s.bodies) {
@@ -44,7 +39,7 @@ std::vector<std::string> still_level_warnings(const Scene& s) {
     const double c = m.visit([&](const auto& model) {
       return double(s.dim == 2 ? model.template wave_speed<2>(1) : model.template wave_speed<3>(1));
     });
-    const double rho0 = m.density(), K = rho0 * c * c, H = body_level(b, up) - b.shape.lower(up);
+    const double rho0 = m.density(), K = rho0 * c * c, H = b.liquid_level(up) - b.shape.lower(up);
     const double drop = rho0 * g * H * H / (2 * K);
     if (drop > tolerance)
       out.push_back("bodies[" + std::to_string(i) + "]: hydrostatic is false: the water settles under its own weight "
@@ -54,7 +49,7 @@ std::vector<std::string> still_level_warnings(const Scene& s) {
   auto check_level = [&](const std::string& what, const std::vector<double>& where, double level) {
     const BodySpec* b = liquid_under(s, where);
     if (!b) return;
-    const double seeded = body_level(*b, up);
+    const double seeded = b->liquid_level(up);
     if (std::abs(level - seeded) > tolerance)
       out.push_back(what + ": still_level " + metres(level) + " differs from the level of the water under it, " +
                     metres(seeded) + " (bodies[" + std::to_string(b - s.bodies.data()) + "]), by more than dx / 20 = " +

@@ -65,6 +65,10 @@ struct BodySpec {
   // Ice bodies only: surface crevasses cut from the top, from seeded simplex noise (shape/crevasse_field.h;
   // key "crevasses" of the body).
   std::optional<CrevasseField> crevasses;
+
+  // A liquid body's still level [m], on which its top is seeded (sim/seeding.cpp): its solitary wave's still
+  // level, its surface_level, or its shape's top along `up`, the vertical axis.
+  double liquid_level(int up) const { return solitary ? solitary->still_level : surface_level.value_or(shape.upper(up)); }
 };
 
 // A boundary (boundary/boundary.h) of a registered type: its scene object as checked by the loader, from which

@@ -102,7 +102,7 @@ class BodySeeder {
     // volume above the shape's bottom (seed_column). A level on a lattice plane keeps the lattice of the grid.
     if (mat_.traits().fluid && !mat_.traits().rigid && !crevasse_water) {
       constexpr int up = vertical_axis<dim>;
-      const double level = body.solitary ? body.solitary->still_level : body.surface_level.value_or(body.shape.upper(up));
+      const double level = body.liquid_level(up);
       const double planes = level / h_;
       if (std::abs(planes - std::round(planes)) > 1e-9 * std::max(1.0, std::abs(planes)))
         shift_ = level - std::ceil(planes) * h_;
