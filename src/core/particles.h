@@ -7,7 +7,9 @@
 // reference_volume), exactly how seeding sets the mass.
 //
 // Solids (ice) also carry the elastic deformation gradient F and the hardening variable alpha of the
-// plastic model (material/cohesive_cam_clay.h). Only they do: the particles are kept in two runs,
+// plastic model (material/cohesive_cam_clay.h), and in 2D the out-of-plane elastic stretch Fz: a 2D body is in
+// plane strain (the total F_zz is 1), so its elastic state is the 3x3 F_e = diag(F, Fz), whose Fz departs from 1
+// where plastic flow strains the body out of its plane (material/ice.h). Only solids carry these: the particles are kept in two runs,
 //   [0, solid_count())       the solids, whose F[q] and alpha[q] are the state of particle q,
 //   [solid_count(), size())  the fluids (water), which have no F or alpha at all,
 // so F and alpha hold solid_count() entries and are indexed by the particle index itself. This layout
@@ -42,6 +44,7 @@ struct Particles {
   // Solids only: entry q is the state of particle q < solid_count().
   std::vector<Mat<dim>> F;
   std::vector<Real> alpha;
+  std::vector<Real> Fz;  // 2D only (plane strain): the out-of-plane elastic stretch; empty in 3D
 
   size_t size() const { return x.size(); }
   size_t solid_count() const { return F.size(); }
@@ -52,7 +55,9 @@ struct Particles {
   void add_copy(const Particles& from, size_t q) {
     const uint64_t next = next_id;
     const bool solid = q < from.solid_count();
-    if (solid) add_solid(from.x[q], from.v[q], from.mass[q], from.J[q], from.material[q], from.C[q], from.F[q], from.alpha[q]);
+    if (solid)
+      add_solid(from.x[q], from.v[q], from.mass[q], from.J[q], from.material[q], from.C[q], from.F[q], from.alpha[q],
+                from.out_of_plane(q));
     else add_fluid(from.x[q], from.v[q], from.mass[q], from.J[q], from.material[q], from.C[q]);
     id[solid ? solid_count() - 1 : size() - 1] = from.id[q];
     next_id = next;
@@ -77,6 +82,7 @@ struct Particles {
       if (q < solid_count()) {
         F[q] = batch.F[j];
         alpha[q] = batch.alpha[j];
+        if constexpr (dim == 2) Fz[q] = batch.Fz[j];
       }
     }
   }
@@ -91,13 +97,20 @@ struct Particles {
     insert_common(size(), xp, vp, Cp, m, Jp, mat);
   }
 
-  // Adds a solid particle with elastic deformation gradient Fe and hardening variable alpha0 after the
-  // last solid (an append while no fluid has been added; otherwise every fluid array is shifted).
+  // Adds a solid particle with elastic deformation gradient Fe, hardening variable alpha0 and (2D) out-of-plane
+  // elastic stretch fz after the last solid (an append while no fluid has been added; otherwise every fluid array
+  // is shifted).
   void add_solid(const Vec<dim>& xp, const Vec<dim>& vp, Real m, Real Jp, MaterialId mat, const Mat<dim>& Cp,
-                 const Mat<dim>& Fe, Real alpha0) {
+                 const Mat<dim>& Fe, Real alpha0, Real fz = 1) {
     insert_common(solid_count(), xp, vp, Cp, m, Jp, mat);
     F.push_back(Fe);
     alpha.push_back(alpha0);
+    if constexpr (dim == 2) Fz.push_back(fz);
+  }
+  // The out-of-plane elastic stretch of solid q: Fz[q] in 2D, 1 in 3D (no such axis).
+  Real out_of_plane(size_t q) const {
+    if constexpr (dim == 2) return Fz[q];
+    else return Real(1);
   }
 
   // Applies fn to every array with one entry per particle, then to every solid-only array (used to
@@ -109,6 +122,7 @@ struct Particles {
   template <class Fn>
   void for_each_solid_array(Fn&& fn) {
     fn(F); fn(alpha);
+    if constexpr (dim == 2) fn(Fz);
   }
 
   // Reorders the particles so that new particle k is old particle order[k], except that the solids are moved

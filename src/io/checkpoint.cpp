@@ -14,9 +14,9 @@
 
 namespace cdmpm {
 namespace {
-constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', '9'};          // one file
+constexpr char kMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', 'A'};          // one file
 constexpr char kManifestMagic[8] = {'C', 'D', 'M', 'P', 'M', 'C', 'K', 'D'};  // a distributed run's manifest
-constexpr char kPieceMagic[8] = {'C', 'D', 'M', 'P', 'M', 'P', 'C', '1'};     // one rank's piece
+constexpr char kPieceMagic[8] = {'C', 'D', 'M', 'P', 'M', 'P', 'C', '2'};     // one rank's piece
 constexpr uint64_t kMaxString = 4096;  // longest string field (frame file names, fingerprint section names)
 
 // Writes and keeps the CRC-32 of everything written.

@@ -1,9 +1,9 @@
 // checkpoint.h - binary checkpoint of the full particle state and the run's bookkeeping, for resume: one file
 // (one process, or a distributed run with --gather-output) or a manifest and one piece per rank (a distributed run).
 //
-// One file (format CDMPMCK9, native byte order; a "length" is a uint64 element count, a string is a length and
+// One file (format CDMPMCKA, native byte order; a "length" is a uint64 element count, a string is a length and
 // its bytes):
-//   magic "CDMPMCK9" | int32 dim | int32 sizeof(Real) | uint64 particle count n | uint64 solid count ns
+//   magic "CDMPMCKA" | int32 dim | int32 sizeof(Real) | uint64 particle count n | uint64 solid count ns
 //   | fingerprint: length, then per entry (string section, uint64 hash) (io/scene_fingerprint.h)
 //   | double time | int64 steps | int64 frame_index | int64 probe_index | double wave_dt_at_start
 //   | probe_state (length + doubles: each probe's own state, probe/probes.h) | frames: length, then per frame (double time, string file)
@@ -11,13 +11,13 @@
 //   | crack_starts (length + doubles, probe/crack_starts.h)
 //   | rigid_bodies (length + doubles, sim/rigid_bodies.h) | hazard (length + doubles, hazard/hazard_map.h)
 //   | every per-particle array as length + raw elements (Particles::for_each_array order: id x v C mass J material)
-//   | the solid-only arrays F and alpha likewise (the solids are particles 0 .. ns - 1)
+//   | the solid-only arrays F, alpha and (2D) Fz likewise (the solids are particles 0 .. ns - 1)
 //   | uint32 CRC-32 of every byte before it.
 // Per rank (format CDMPMCKD): the manifest checkpoint.bin has the same fields up to the hazard record (n and ns
 // the totals over the pieces), then, instead of the arrays, the pieces: length, then per piece (string file name,
 // uint64 n, uint64 ns, uint64 file size, uint32 the piece's CRC-32) | uint32 CRC-32. Each piece
 // (checkpoint_S_rR.bin: S the slot a or b, R the rank) is
-//   magic "CDMPMPC1" | int32 dim | int32 sizeof(Real) | uint64 n | uint64 ns | the particles' order keys (length +
+//   magic "CDMPMPC2" | int32 dim | int32 sizeof(Real) | uint64 n | uint64 ns | the particles' order keys (length +
 //   uint64, ascending: their indices in the one-process array, parallel/migration.h) | the arrays as above | CRC-32.
 // Reading merges the pieces by key into the one-process array, so a checkpoint resumes on any number of ranks
 // (and in one process) with the bits of one file. A distributed run reads only its share (CheckpointShare): rank r
@@ -25,8 +25,9 @@
 // (parallel/domain.h), so no rank holds the whole state. The two slots alternate: the new pieces are written while the
 // manifest still names the previous slot's, then the manifest is replaced, then the previous slot is removed.
 // Reading checks the magic, then the CRC over the whole file (and each piece's against the manifest and its own),
-// then every length against the bytes left before allocating (checkpoint_format.h); older formats (CDMPMCK2..8;
-// CK6 had no particle ids, CK7 no hazard record, CK8 no crack-start record) are refused with a message saying so.
+// then every length against the bytes left before allocating (checkpoint_format.h); older formats (CDMPMCK2..9;
+// CK6 had no particle ids, CK7 no hazard record, CK8 no crack-start record, CK9 no out-of-plane stretch Fz of 2D
+// solids) are refused with a message saying so.
 // Written to a temporary file and renamed, so the previous checkpoint stays valid until the new one is
 // complete. A resumed run continues bit for bit: the grid, particle bins and speeds are all recomputed from
 // the particle state.

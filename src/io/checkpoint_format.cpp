@@ -70,6 +70,7 @@ std::string bad_particle(const Particles<dim>& p, const Scene& scene) {
     if (!(std::isfinite(p.J[q]) && p.J[q] > 0)) return "J is not a finite number > 0" + at;
     if (!p.v[q].allFinite() || !p.C[q].allFinite()) return "non-finite velocity or C" + at;
     if (q < ns && (!p.F[q].allFinite() || !std::isfinite(p.alpha[q]))) return "non-finite F or alpha" + at;
+    if (q < ns && !(std::isfinite(p.out_of_plane(q)) && p.out_of_plane(q) > 0)) return "Fz is not a finite number > 0" + at;
   }
   return "";
 }

@@ -4,9 +4,11 @@
 //
 // Stress invariants of the Kirchhoff stress tau (d = dim):
 //   p = -tr(tau)/d                       pressure, POSITIVE IN COMPRESSION,
-//   q = sqrt(3/2) |dev(tau)|             von Mises stress (Frobenius norm of the deviator).
-//   In 2D the same sqrt(3/2) factor is applied to the in-plane 2x2 deviator (a convention: it is not the
-//   plane-strain Mises stress, which would need tau_zz; it only rescales M in 2D).
+//   q = sqrt(3/2) |dev(tau)|             von Mises stress (Frobenius norm of the deviator),
+//   of the full 3x3 state in 3D and in 2D, where the body is in plane strain (F_zz = 1 in total; the elastic
+//   state diag(F, Fz), return_mapping_plane_strain), so one set of parameters is one material in 2D and 3D.
+//   The reference implementation's 2D convention (use_reference_2d) instead takes the invariants of the 2x2
+//   state with q^2 = (6 - d)/2 |dev tau|^2 = 2 |dev tau|^2, d = 2 in p, and its own softening measure and floor.
 // Yield function (ellipse in the p-q plane through p = -beta p0 and p = p0, centre p_c = (1 - beta) p0 / 2):
 //   y(p, q) = (1 + 2 beta) q^2 + M^2 (p + beta p0)(p - p0) <= 0.
 //   p0 is the compressive strength (hydrostatic), beta p0 the hydrostatic tensile strength (cohesion).
@@ -33,7 +35,7 @@
 //   F <- U diag(s') V^T.
 //
 // Hardening/softening (if `hardening`). alpha is a signed accumulated plastic strain; p0 depends on it through
-//   p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))),  eps = p0_floor = 1e-4,
+//   p0(alpha) = kappa (eps + sinh(xi max(-alpha, 0))),  eps = p0_floor = 1e-4 (1e-5 in the reference 2D convention),
 // so p0 DECREASES as alpha INCREASES (down to kappa eps once alpha >= 0) and increases as alpha decreases.
 //   * q-branch (the specification's rule: driven by the DEVIATORIC plastic strain). With the Hencky (log)
 //     strains of the trial and projected elastic states, coaxial in U, the plastic strain increment is
@@ -48,6 +50,10 @@
 //         p = p_c exactly:            alpha unchanged.
 //   * tips (unchanged, volumetric): alpha += ln(J_trial / J_new). At the tensile tip J_new < J_trial, so
 //     alpha increases (softening); at the compressive tip J_new > J_trial, alpha decreases (hardening).
+//   * the reference 2D convention (use_reference_2d) measures the q-branch's increment as the reference
+//     implementation does, by the change of the deviatoric strain: delta_eps = ln(z_trial / z_new),
+//     z = sqrt(1 + |dev b|) with b = J^(2/d) bhat, i.e. |dev eps_trial| - |dev eps_new| at small strain (a factor
+//     sqrt(3/2) faster than the measure above), and takes eps = 1e-5.
 //   * elastic steps, and hardening == false: alpha is left untouched (bitwise).
 // SIGN CONVENTION, in short: alpha UP = weaker. TENSION SOFTENS (damages) the ice toward p0 = kappa eps,
 // beta p0 -> beta kappa eps (near-zero cohesion); COMPRESSION HARDENS it.
@@ -76,9 +82,24 @@ namespace cdmpm {
 struct CohesiveCamClay {
   Real M = Real(1.85), beta = Real(0.3), xi = Real(3);
   bool hardening = true;
+  // The invariant and softening conventions (see the header): q^2 = q_factor |dev tau|^2, the floor eps of
+  // p0(alpha) and the plastic strain measure of the softening. The defaults are the von Mises stress of the full
+  // (3x3) state; reference_2d() gives the reference implementation's 2D convention.
+  enum class Softening { hencky_mises, deviatoric_strain };
+  Real q_factor = Real(1.5);
+  Real p0_floor = Real(1e-4);  // eps in p0(alpha): residual strength / kappa
+  Softening softening = Softening::hencky_mises;
 
-  static constexpr Real p0_floor = Real(1e-4);            // eps in p0(alpha): residual strength / kappa
   static constexpr Real min_singular_value = Real(1e-6);  // clamp for degenerate / inverted F
+
+  // The 2D convention of the CD-MPM reference implementation (Wolper et al. 2019; ziran2020,
+  // Lib/Ziran/Physics/PlasticityApplier.cpp, NonAssociativeCamClay), on the 2x2 state: q^2 = (6 - d)/2 |dev tau|^2
+  // = 2 |dev tau|^2, eps = 1e-5, the softening increment the change of |dev eps| (ln z, z = sqrt(1 + |dev b|)).
+  void use_reference_2d() {
+    q_factor = Real(2);
+    p0_floor = Real(1e-5);
+    softening = Softening::deviatoric_strain;
+  }
 
   Real p0_of_alpha(Real alpha, Real kappa) const {
     return kappa * (p0_floor + std::sinh(xi * std::max(-alpha, Real(0))));
@@ -95,28 +116,31 @@ struct CohesiveCamClay {
     return (Real(1) + Real(2) * beta) * q * q + M * M * (p + beta * p0) * (p - p0);
   }
 
-  // Invariants of a Kirchhoff stress given as principal values or as a full matrix.
+  // Invariants of a Kirchhoff stress given as principal values or as a full matrix, in this convention
+  // (q^2 = q_factor |dev tau|^2; pass the 3x3 state of a plane-strain body).
   template <int dim>
   static Real pressure(const Vec<dim>& tau) { return -tau.sum() / Real(dim); }
   template <int dim>
-  static Real mises(const Vec<dim>& tau) {
-    return std::sqrt(Real(1.5)) * (tau.array() - tau.sum() / Real(dim)).matrix().norm();
+  Real mises(const Vec<dim>& tau) const {
+    return std::sqrt(q_factor) * (tau.array() - tau.sum() / Real(dim)).matrix().norm();
   }
   template <int dim>
   static Real pressure(const Mat<dim>& tau) { return -tau.trace() / Real(dim); }
   template <int dim>
-  static Real mises(const Mat<dim>& tau) {
-    return std::sqrt(Real(1.5)) * (tau - (tau.trace() / Real(dim)) * Mat<dim>::Identity()).norm();
+  Real mises(const Mat<dim>& tau) const {
+    return std::sqrt(q_factor) * (tau - (tau.trace() / Real(dim)) * Mat<dim>::Identity()).norm();
   }
 
-  // Uniaxial strength magnitude sigma > 0 predicted by the yield surface for tau = diag(+-sigma, 0, ...):
-  // p = -+sigma/d, q = sqrt(3/2) sqrt((d-1)/d) sigma (= sigma in 3D, sqrt(3)/2 sigma in 2D).
+  // Uniaxial strength magnitude sigma > 0 predicted by the yield surface for a stress diag(+-sigma, 0, ...) with n
+  // principal values (n = 3: the laboratory's uniaxial test, also for a plane-strain body, whose material it is;
+  // n = 2: the reference 2D convention's 2x2 state): p = -+sigma/n, q^2 = q_factor (n-1)/n sigma^2 (= sigma^2 in
+  // 3D, and in the reference 2D convention).
   // y = 0 is a quadratic A s^2 + B s + C = 0 with C = -M^2 beta p0^2 <= 0: exactly one root s >= 0.
   // Tension is weaker than compression iff beta < 1.
-  template <int dim>
+  template <int n>
   Real uniaxial_strength(Real p0, bool tension) const {
-    const Real t = (tension ? Real(-1) : Real(1)) / Real(dim);  // p = t sigma
-    const Real cq2 = Real(1.5) * Real(dim - 1) / Real(dim);     // q^2 = cq2 sigma^2
+    const Real t = (tension ? Real(-1) : Real(1)) / Real(n);   // p = t sigma
+    const Real cq2 = q_factor * Real(n - 1) / Real(n);         // q^2 = cq2 sigma^2
     const Real A = (Real(1) + Real(2) * beta) * cq2 + M * M * t * t;
     const Real B = M * M * t * (beta - Real(1)) * p0;
     const Real C = -M * M * beta * p0 * p0;
@@ -126,16 +150,17 @@ struct CohesiveCamClay {
   }
 
   // Pure-shear strength tau_s > 0 of the yield surface: the shear stress tau of tau_xy = tau_yx = tau (all else 0),
-  // for which p = 0 and |dev tau| = sqrt(2) tau, so q = sqrt(3) tau in 2D (the in-plane convention above) and
-  // in 3D alike. y(0, q) = 0 gives (1 + 2 beta) q^2 = M^2 beta p0^2:
-  //   tau_s = M p0 sqrt(beta / (3 (1 + 2 beta))).
-  // Against the uniaxial tensile strength sigma_t = uniaxial_strength<dim>(p0, true): in the von Mises limit
+  // for which p = 0 and |dev tau| = sqrt(2) tau, so q^2 = 2 q_factor tau^2 (3 tau^2 in 3D and plane strain).
+  // y(0, q) = 0 gives (1 + 2 beta) q^2 = M^2 beta p0^2:
+  //   tau_s = M p0 sqrt(beta / (2 q_factor (1 + 2 beta))).
+  // Against the uniaxial tensile strength sigma_t = uniaxial_strength<3>(p0, true): in the von Mises limit
   // (M small, so that the strengths, of order M p0, leave |p| << beta p0 and << p0, where the ellipse is the line
-  // q = M p0 sqrt(beta / (1 + 2 beta))), q is the same in shear and in tension, sigma_t = q / sqrt(3/2 (d - 1)/d),
-  // so tau_s / sigma_t -> 1/sqrt(3) in 3D and 1/2 in 2D (q = sqrt(3)/2 sigma in uniaxial 2D). Away from that
-  // limit the ellipse narrows towards its tensile tip, sigma_t falls faster than tau_s and the ratio rises
-  // (docs/ice.md, the failure-mode study: with the compressive strength at least 1.6 sigma_t, >= 0.63 in 2D).
-  Real shear_strength(Real p0) const { return M * p0 * std::sqrt(beta / (Real(3) * (Real(1) + Real(2) * beta))); }
+  // q = M p0 sqrt(beta / (1 + 2 beta))), q is the same in shear and in tension, so tau_s / sigma_t -> 1/sqrt(3).
+  // Away from that limit the ellipse narrows towards its tensile tip, sigma_t falls faster than tau_s and the
+  // ratio rises (docs/ice.md).
+  Real shear_strength(Real p0) const {
+    return M * p0 * std::sqrt(beta / (Real(2) * q_factor * (Real(1) + Real(2) * beta)));
+  }
 
   // True if F is certainly an elastic trial state that the return mapping leaves untouched (see the header):
   // not inverted, smallest singular value certainly above the clamp, and y(p, q) <= 0. Without a root:
@@ -156,7 +181,7 @@ struct CohesiveCamClay {
     if (!(J * J >= clamp2 * (dim == 2 ? others : others * others))) return false;
     const Real inv_kappa = Real(1) / e.kappa;
     const Real mu_k = e.mu * inv_kappa, p_k = p * inv_kappa, p0_k = p0 * inv_kappa;
-    const Real X = (Real(1) + Real(2) * beta) * Real(1.5) * mu_k * mu_k *
+    const Real X = (Real(1) + Real(2) * beta) * q_factor * mu_k * mu_k *
                    (b - (trb / Real(dim)) * Mat<dim>::Identity()).squaredNorm();
     const Real R = M * M * (p_k + beta * p0_k) * (p0_k - p_k);
     if constexpr (dim == 2) return X <= R * J * J;
@@ -166,6 +191,8 @@ struct CohesiveCamClay {
   // Plastic projection of the elastic deformation gradient F (in place). p0 is the current compressive
   // strength (normally p0_of_alpha(alpha, e.kappa)); alpha is updated if `hardening`.
   // Returns true iff F was modified (plastic projection, or the degenerate/inverted-F safeguard).
+  // dim = 3, and dim = 2 in the reference implementation's 2D convention (2x2 invariants); a plane-strain 2D body
+  // takes return_mapping_plane_strain.
   template <int dim>
   bool return_mapping(Mat<dim>& F, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
     // In 3D the check saves the iterative SVD of an elastic particle. The 2D SVD is closed-form and costs
@@ -176,37 +203,58 @@ struct CohesiveCamClay {
     Mat<dim> U, V;
     Vec<dim> s;
     svd<dim>(F, U, s, V);  // U, V rotations; an inverted F has s(dim - 1) < 0
+    if (!project<dim>(s, alpha, p0, e)) return false;
+    F = U * s.asDiagonal() * V.transpose();
+    return true;
+  }
+
+  // Plane strain (Hill 1950, The Mathematical Theory of Plasticity, ch. VII): the elastic state of a 2D body is
+  // the 3x3 F_e = diag(F, fz), F the in-plane 2x2 and fz the out-of-plane stretch. F = U diag(s0, s1) V^T
+  // makes F_e = diag(U, 1) diag(s0, s1, fz) diag(V, 1)^T, so the 3D return mapping acts on the principal
+  // values (s0, s1, fz) and keeps the out-of-plane axis a principal axis: the result is again of the form
+  // diag(F', fz'), the same to round-off as return_mapping<3> of diag(F, fz) (tests/unit/test_plane_strain.cpp).
+  bool return_mapping_plane_strain(Mat<2>& F, Real& fz, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
+    Mat<2> U, V;
+    Vec<2> s2;
+    svd<2>(F, U, s2, V);
+    Vec<3> s(s2(0), s2(1), fz);
+    if (!project<3>(s, alpha, p0, e)) return false;
+    F = U * s.head<2>().asDiagonal() * V.transpose();
+    fz = s(2);
+    return true;
+  }
+
+  // The return mapping on the n principal stretches s of the trial elastic state (see the header; n = 3 in 3D
+  // and plane strain, n = 2 in the reference implementation's 2D convention), in place. Returns true iff s was
+  // changed (projected, or clamped).
+  template <int n>
+  bool project(Vec<n>& s, Real& alpha, Real p0, const NeoHookeanSplit& e) const {
     bool clamped = false;
-    for (int i = 0; i < dim; ++i)
+    for (int i = 0; i < n; ++i)
       if (!(s(i) >= min_singular_value)) {  // also catches a negative (inverted) last value
         s(i) = min_singular_value;
         clamped = true;
       }
 
     const Real J = s.prod();
-    const Real Jd = root_dim<dim>(J);  // J^(1/d), and J^(-2/d) from it: one root per call
+    const Real Jd = root_dim<n>(J);  // J^(1/n), and J^(-2/n) from it: one root per call
     const Real Jm2d = Real(1) / (Jd * Jd);
-    Vec<dim> bhat = (Jm2d * s.array().square()).matrix();  // unimodular stretch, prod = 1
-    const Real bmean = bhat.sum() / Real(dim);
-    const Vec<dim> bdev = (bhat.array() - bmean).matrix();
+    Vec<n> bhat = (Jm2d * s.array().square()).matrix();  // unimodular stretch, prod = 1
+    const Real bmean = bhat.sum() / Real(n);
+    const Vec<n> bdev = (bhat.array() - bmean).matrix();
     const Real p = e.pressure_of_J(J);
-    const Real q = std::sqrt(Real(1.5)) * e.mu * bdev.norm();
+    const Real q = std::sqrt(q_factor) * e.mu * bdev.norm();
     const Real y = yield(p, q, p0);
 
-    auto rebuild = [&](const Vec<dim>& snew) { F = U * snew.asDiagonal() * V.transpose(); };
-
-    if (y <= 0) {
-      if (clamped) rebuild(s);
-      return clamped;
-    }
+    if (y <= 0) return clamped;
 
     if (p > p0 || p < -beta * p0) {  // tips: hydrostatic state at the tip pressure
       const Real p_tip = p > p0 ? p0 : -beta * p0;
       // kappa/2 (J^2 - 1) = -p_tip. p_tip = p0 >= kappa/2 is unreachable (p < kappa/2); guard anyway.
-      const Real J2 = std::max(Real(1) - Real(2) * p_tip / e.kappa, std::pow(min_singular_value, Real(2 * dim)));
+      const Real J2 = std::max(Real(1) - Real(2) * p_tip / e.kappa, std::pow(min_singular_value, Real(2 * n)));
       const Real J_new = std::sqrt(J2);
       if (hardening) alpha += std::log(J / J_new);
-      rebuild(Vec<dim>::Constant(root_dim<dim>(J_new)));
+      s = Vec<n>::Constant(root_dim<n>(J_new));
       return true;
     }
 
@@ -214,12 +262,12 @@ struct CohesiveCamClay {
     const Real q_target =
         std::sqrt(std::max(M * M * (p0 - p) * (p + beta * p0) / (Real(1) + Real(2) * beta), Real(0)));
     const Real c = q_target / q;
-    const Vec<dim> cd = c * bdev;
+    const Vec<n> cd = c * bdev;
     // Newton on f(m) = prod(m + cd_i) - 1 from m = bmean (f >= 0 there): monotone decrease to the root.
     Real m = bmean;
     for (int it = 0; it < 100; ++it) {
       Real f = 1, df = 0;
-      for (int i = 0; i < dim; ++i) {
+      for (int i = 0; i < n; ++i) {
         df = df * (m + cd(i)) + f;  // product rule accumulated
         f *= (m + cd(i));
       }
@@ -229,24 +277,29 @@ struct CohesiveCamClay {
       if (!(m_new < m)) break;  // converged to machine precision
       m = m_new;
     }
-    Vec<dim> s_new;
-    for (int i = 0; i < dim; ++i) s_new(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
     if (hardening) {
-      // Equivalent deviatoric plastic strain increment sqrt(2/3) |ln s - ln s_new|, signed by the side of the
-      // ellipse centre (see the header). ln(s_i / s_new_i) = ln(bhat_i / bhat'_i) / 2.
+      // The plastic strain increment, signed by the side of the ellipse centre (see the header).
       const Real p_c = (Real(1) - beta) * p0 / Real(2);
-      Real sq = 0;
-      for (int i = 0; i < dim; ++i) {
-        const Real l = Real(0.5) * std::log(bhat(i) / (m + cd(i)));
-        sq += l * l;
+      Real delta_eps = 0;
+      if (softening == Softening::hencky_mises) {
+        // sqrt(2/3) |ln s - ln s_new|, ln(s_i / s_new_i) = ln(bhat_i / bhat'_i) / 2.
+        Real sq = 0;
+        for (int i = 0; i < n; ++i) {
+          const Real l = Real(0.5) * std::log(bhat(i) / (m + cd(i)));
+          sq += l * l;
+        }
+        delta_eps = std::sqrt(Real(2) / Real(3) * sq);
+      } else {
+        // ln(z_trial / z_new), z = sqrt(1 + |dev b|), b = J^(2/n) bhat: the change of |dev eps| (small strain).
+        const Real dev_b = Jd * Jd * bdev.norm();
+        delta_eps = Real(0.5) * std::log((Real(1) + dev_b) / (Real(1) + c * dev_b));
       }
-      const Real delta_eps = std::sqrt(Real(2) / Real(3) * sq);
       if (std::isfinite(delta_eps)) {
         if (p < p_c) alpha += delta_eps;
         else if (p > p_c) alpha -= delta_eps;
       }
     }
-    rebuild(s_new);
+    for (int i = 0; i < n; ++i) s(i) = Jd * std::sqrt(std::max(m + cd(i), Real(0)));
     return true;
   }
 };

@@ -43,12 +43,14 @@ struct MaterialTraits {
   bool breakable = false;    // carries damage: its intact connected parts are tracked as icebergs
 };
 
-// State of a particle seeded at rest: total volume ratio J and (solid_state models) elastic F and alpha.
+// State of a particle seeded at rest: total volume ratio J and (solid_state models) elastic F, alpha and, in 2D,
+// the out-of-plane elastic stretch Fz (core/particles.h).
 template <int dim>
 struct InitialState {
   Real J = 1;
   Mat<dim> F = Mat<dim>::Identity();
   Real alpha = 0;
+  Real Fz = 1;
 };
 
 template <class M>

@@ -15,14 +15,10 @@
 //   tau_i = mu J^(-2/d) (s_i^2 - sum_k s_k^2 / d) + kappa/2 (J^2 - 1),  J = prod s_k.
 // Small-strain limit (F = I + grad u, eps = sym grad u): tau ~ 2 mu dev(eps) + kappa tr(eps) I.
 //
-// Elastic constants from (E, nu), see from_young_poisson:
-//   mu = E / (2 (1 + nu)) in both 2D and 3D;
-//   3D: kappa = E / (3 (1 - 2 nu)), the ordinary bulk modulus;
-//   2D: the simulation is PLANE STRAIN (eps_zz = 0). Plane-strain Hooke's law in the plane reads
-//       sigma = lambda tr(eps) I + 2 mu eps = 2 mu dev2(eps) + (lambda + mu) tr(eps) I  (dev2: 2D deviator),
-//       so the in-plane bulk modulus that the 2D model must use is kappa = lambda + mu
-//       = E / (2 (1 + nu)(1 - 2 nu)). With this choice the 2D model linearises exactly to plane-strain
-//       linear elasticity (tested in tests/unit/test_ice_constitutive.cpp).
+// Elastic constants from (E, nu), see from_young_poisson: mu = E / (2 (1 + nu)), kappa = E / (3 (1 - 2 nu)) (the
+// bulk modulus, lambda + 2/3 mu). A 2D body in plane strain evaluates the 3D energy at diag(F, Fz)
+// (material/ice.h), which linearises to plane-strain Hooke's law sigma = lambda tr(eps) I + 2 mu eps; the d = 2
+// form of the energy with this kappa is the reference implementation's 2D convention.
 // Preconditions: J = det F > 0 (the energy contains ln J). The plastic return mapping
 // (material/cohesive_cam_clay.h) guarantees this for the stored elastic F.
 #pragma once
@@ -39,19 +35,16 @@ namespace cdmpm {
 struct NeoHookeanSplit {
   Real mu = 0, kappa = 0;
 
-  // mu, kappa from Young's modulus and Poisson's ratio (2D: plane strain, kappa = lambda + mu; see above).
-  static NeoHookeanSplit from_young_poisson(Real E, Real nu, int dim) {
+  // mu, kappa from Young's modulus and Poisson's ratio (see above).
+  static NeoHookeanSplit from_young_poisson(Real E, Real nu) {
     NeoHookeanSplit e;
     e.mu = E / (Real(2) * (Real(1) + nu));
-    if (dim == 3)
-      e.kappa = E / (Real(3) * (Real(1) - Real(2) * nu));
-    else
-      e.kappa = E / (Real(2) * (Real(1) + nu) * (Real(1) - Real(2) * nu));
+    e.kappa = E / (Real(3) * (Real(1) - Real(2) * nu));
     return e;
   }
 
-  // Small-strain P-wave (uniaxial-strain) modulus kappa + 2 mu (1 - 1/d): lambda + 2 mu in 3D and in 2D plane
-  // strain. Gives the elastic wave speed sqrt(modulus / rho) for the time-step restriction.
+  // Small-strain P-wave (uniaxial-strain) modulus kappa + 2 mu (1 - 1/d) of the d-dimensional energy: lambda + 2 mu
+  // in 3D (and so in plane strain). Gives the elastic wave speed sqrt(modulus / rho) for the time-step restriction.
   template <int dim>
   Real p_wave_modulus() const { return kappa + Real(2) * mu * (Real(1) - Real(1) / Real(dim)); }
 

@@ -27,12 +27,12 @@
 
 namespace cdmpm {
 
-// One particle with its key, as sent between ranks (F and alpha are zero for a fluid).
+// One particle with its key, as sent between ranks (F, alpha and fz are zero for a fluid).
 template <int dim>
 struct ParticleRecord {
   uint64_t key, id;
   Real x[dim], v[dim], C[dim * dim], F[dim * dim];
-  Real mass, J, alpha;
+  Real mass, J, alpha, fz;
   uint8_t material, solid;
 
   static ParticleRecord of(const Particles<dim>& p, size_t q, uint64_t key) {
@@ -49,6 +49,7 @@ struct ParticleRecord {
     if (r.solid) {
       Eigen::Map<Mat<dim>>(r.F) = p.F[q];
       r.alpha = p.alpha[q];
+      r.fz = p.out_of_plane(q);
     }
     return r;
   }
@@ -57,7 +58,7 @@ struct ParticleRecord {
     const uint64_t next = p.next_id;
     const Vec<dim> xp = Eigen::Map<const Vec<dim>>(x), vp = Eigen::Map<const Vec<dim>>(v);
     const Mat<dim> Cp = Eigen::Map<const Mat<dim>>(C);
-    if (solid) p.add_solid(xp, vp, mass, J, material, Cp, Eigen::Map<const Mat<dim>>(F), alpha);
+    if (solid) p.add_solid(xp, vp, mass, J, material, Cp, Eigen::Map<const Mat<dim>>(F), alpha, fz);
     else p.add_fluid(xp, vp, mass, J, material, Cp);
     p.id[solid ? p.solid_count() - 1 : p.size() - 1] = id;
     p.next_id = next;

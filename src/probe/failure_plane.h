@@ -11,6 +11,12 @@
 //   is the crack the block came off. A least-squares plane e = e0 + b z (+ c y) through the bins' (z, y, e), z and
 //   y the bins' mean particle heights and cross positions, gives the dip from horizontal, angle = atan(1 / |b|)
 //   (90 degrees for a vertical crack, b = 0).
+//   Only the new fracture. A block bounded above by a crevasse has two kinds of glacier-facing edge: the crevasse's
+//   wall, a free surface before the event, and below it the crack that broke (Luethi & Vieli 2016 measure the dip
+//   of the latter). Given the positions of the broken ice (damage at or above the iceberg threshold), a bin enters
+//   the fit only if broken ice lies beyond its edge, within reach = 2 dx along the flow (in its own row or the
+//   next one, and strip): the edge faces the broken band, not air or water. If fewer than two bins do, the whole
+//   edge is fitted (the block broke with no band left beside it) and rows_fitted says how many rows were.
 //   Failure width. The along-flow extent of the block's top: the particles within 2 dx of the block's highest
 //   particle (in 3D: per strip, then the median over strips), max x_a - min x_a + spacing, so that a row of n
 //   particles at spacing h has width n h as the iceberg lengths of icebergs.h.
@@ -31,11 +37,15 @@ namespace cdmpm {
 struct FailureGeometry {
   double width = std::numeric_limits<double>::quiet_NaN();  // [m]
   double angle = std::numeric_limits<double>::quiet_NaN();  // dip of the failure plane from horizontal [degrees]
+  size_t rows_fitted = 0;                                    // bins in the fit
+  bool band_only = false;                                    // the fit kept only the bins facing broken ice
 };
 
-// x: the block's particle positions; glacier_side: -1 or +1 along flow_axis (see above).
+// x: the block's particle positions; glacier_side: -1 or +1 along flow_axis (see above); broken: the positions of
+// the broken ice (may be empty: the whole edge is fitted).
 template <int dim>
-FailureGeometry failure_geometry(const std::vector<Vec<dim>>& x, Real dx, Real spacing, int flow_axis, int glacier_side) {
+FailureGeometry failure_geometry(const std::vector<Vec<dim>>& x, Real dx, Real spacing, int flow_axis, int glacier_side,
+                                 const std::vector<Vec<dim>>& broken = {}) {
   FailureGeometry g;
   if (x.size() < 2 || dx <= 0) return g;
   const int v = dim - 1, a = flow_axis;
@@ -58,6 +68,31 @@ FailureGeometry failure_geometry(const std::vector<Vec<dim>>& x, Real dx, Real s
     b.y += c < 0 ? 0.0 : static_cast<double>(p[c]);
     ++b.n;
   }
+
+  // The bins whose edge faces broken ice: a broken particle beyond the edge (on the glacier's side) within reach,
+  // in the bin's row or the next one.
+  if (!broken.empty()) {
+    const double reach = 2 * static_cast<double>(dx);
+    std::map<std::pair<int64_t, int64_t>, bool> faces;
+    for (const auto& [key, b] : bins) faces[key] = false;
+    for (const auto& p : broken) {
+      const int64_t row = static_cast<int64_t>(std::floor(p[v] / dx));
+      for (int64_t r = row - 1; r <= row + 1; ++r) {
+        const auto it = bins.find({strip_of(p), r});
+        if (it == bins.end()) continue;
+        const double beyond = glacier_side < 0 ? it->second.edge - p[a] : p[a] - it->second.edge;
+        if (beyond >= 0 && beyond <= reach) faces[it->first] = true;
+      }
+    }
+    size_t facing = 0;
+    for (const auto& [key, f] : faces) facing += f;
+    if (facing >= 2) {
+      for (const auto& [key, f] : faces)
+        if (!f) bins.erase(key);
+      g.band_only = true;
+    }
+  }
+  g.rows_fitted = bins.size();
 
   // Least squares e = e0 + b z (+ cy y): normal equations in the centred variables.
   const double nb = static_cast<double>(bins.size());

@@ -8,8 +8,8 @@
 // written to icebergs.csv (with the index of the last frame written), since a berg may break up before the
 // next frame.
 // The first iceberg's failure geometry (probe/failure_plane.h: the width of its top and the dip of the surface it
-// broke off along, on the side facing the glacier) is measured at that same detection and goes into summary.json
-// with it.
+// broke off along, on the side facing the glacier, fitted where that side faces the broken ice, so a crevasse's wall
+// above it is left out) is measured at that same detection and goes into summary.json with it.
 // In a distributed run detection is collective and no rank gathers the ice (parallel/rank_icebergs.h): every rank
 // gets the same bodies and labels its own particles; the first iceberg's particle positions are gathered (in order-key
 // order) for the failure geometry, and the crack-start band below is reduced over the ranks (exact maxima and minima),
@@ -104,8 +104,10 @@ class IcebergTracker {
     first_ = {sim_.time(), b.length, b.height, b.volume, static_cast<double>(b.particles)};
     for (int a = 0; a < dim; ++a) first_.push_back(b.centroid[a]);
     const int axis = sim_.scene.output.flow_axis;
-    const FailureGeometry f = failure_geometry<dim>(block_positions(label), sim_.grid.dx, spacing_, axis,
-                                                    bodies[0].centroid[axis] < b.centroid[axis] ? -1 : 1);
+    const std::vector<Vec<dim>> block = block_positions(label);
+    const FailureGeometry f = failure_geometry<dim>(block, sim_.grid.dx, spacing_, axis,
+                                                    bodies[0].centroid[axis] < b.centroid[axis] ? -1 : 1,
+                                                    broken_positions(block));
     first_.push_back(f.width);
     first_.push_back(f.angle);
     bodies_sign_ = bodies[0].centroid[axis] < b.centroid[axis] ? Real(1) : Real(-1);
@@ -223,16 +225,39 @@ class IcebergTracker {
   }
 
  private:
+  // The positions of the broken ice (damage at or above output.icebergs.damage_threshold) within 3 dx of the block's
+  // bounding box, over every rank, in order-key order: the band the block broke off along, for failure_geometry.
+  std::vector<Vec<dim>> broken_positions(const std::vector<Vec<dim>>& block) const {
+    Vec<dim> lo = Vec<dim>::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+    for (const Vec<dim>& x : block) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    const Real margin = 3 * sim_.grid.dx, threshold = static_cast<Real>(sim_.scene.output.damage_threshold);
+    const auto& P = sim_.particles;
+    return gathered_positions([&](size_t q) {
+      const Material& m = sim_.materials[P.material[q]];
+      return m.traits().breakable && particle_damage(m, P, q) >= threshold &&
+             ((P.x[q] - lo).array() >= -margin).all() && ((hi - P.x[q]).array() >= -margin).all();
+    });
+  }
+
   // The positions of the first iceberg's particles (label 1) over every rank, in order-key order (one process:
   // particle order), for failure_geometry.
   std::vector<Vec<dim>> block_positions(const std::vector<int>& label) const {
+    return gathered_positions([&](size_t q) { return label[q] == 1; });
+  }
+
+  // The positions of this process's particles that `keep` selects, gathered over every rank in order-key order.
+  template <class Keep>
+  std::vector<Vec<dim>> gathered_positions(Keep&& keep) const {
     struct Point {
       uint64_t key;
       Vec<dim> x;
     };
     std::vector<Point> points;
-    for (size_t q = 0; q < label.size(); ++q)
-      if (label[q] == 1) points.push_back({q, sim_.particles.x[q]});
+    for (size_t q = 0; q < sim_.particles.size(); ++q)
+      if (keep(q)) points.push_back({q, sim_.particles.x[q]});
 #ifdef CDMPM_MPI
     if (const Domain<dim>* d = sim_.domain())
       for (Point& pt : points) pt.key = d->keys()[pt.key];

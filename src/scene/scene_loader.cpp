@@ -223,7 +223,7 @@ class Loader {
     if (!traits.solid_state || traits.rigid)
       r_.fail(n.path, "only a body of an ice material (\"type\": \"ice\") takes this key");
     spec.crevasses = CrevasseField::parse(r_, n, spec.shape);
-    if (spec.crevasses->water_depth > 0) {
+    if (n.has("water_material")) {  // checked also when dry: it names a fluid (shape/crevasse_field.h)
       const Node w = n["water_material"];
       const int k = material_ref(w);
       const auto t = s_.materials[k].traits();

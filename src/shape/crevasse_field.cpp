@@ -52,8 +52,8 @@ CrevasseField CrevasseField::parse(const SceneReader& r, const Node& n, const Sh
     c.length = r.number(n, "length", gt(0), 5 * c.spacing);
   }
   c.water_depth = r.number(n, "water_depth", {0, c.max_depth, false, false}, 0.0);
-  if (c.water_depth > 0) c.water_material = r.string(r.required(n, "water_material"));
-  else if (n.has("water_material")) r.fail(n.child("water_material"), "needs \"water_depth\" > 0 (the depth of water in each crevasse [m])");
+  // water_material is required with water; a dry field may name it too (a scene whose crevasse water is a parameter).
+  if (c.water_depth > 0 || n.has("water_material")) c.water_material = r.string(r.required(n, "water_material"));
   // A bound on the work and on crevasses.csv (a spacing or length far below the particle spacing is a mistake).
   const double samples = std::floor((c.x_max - c.x_min) / c.spacing) * static_cast<double>(c.station_ys().size());
   if (samples > kMaxSamples)

@@ -309,7 +309,7 @@ class BodySeeder {
         vp[up] += static_cast<Real>(body_.solitary->w(x[0], x[up], g));
       }
       const MaterialId id = static_cast<MaterialId>(material_index_);
-      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha);
+      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha, st.Fz);
       else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);
       if (seeding) particles.id[solid ? particles.solid_count() - 1 : particles.size() - 1] = index;
     }

@@ -28,7 +28,7 @@ expect_checkpoint CDMPMCKD 2
 $run -np 3 "$mpi" run --resume "$dir" --quiet --threads 1 --set time.end="$t2" > /dev/null
 expect_checkpoint CDMPMCKD 3
 "$serial" run --resume "$dir" --quiet --threads 1 --set time.end="$end" > /dev/null
-expect_checkpoint CDMPMCK9 0
+expect_checkpoint CDMPMCKA 0
 # scene.resolved.json records the first part's time.end, as in one process's resumed runs.
 same_as_straight "$work" "$dir" scene.resolved.json || status=1
 [ $status -eq 0 ] && echo "pieces of np 2 to t = $t1, np 3 to t = $t2, one process to t = $end: the straight run's files"

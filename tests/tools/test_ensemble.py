@@ -361,6 +361,20 @@ def calibration_finds_the_synthetic_truth():
     r = ensemble("calibrate", out, bad)
     check(r.returncode == 2 and f"{bad}: targets.0.quantity:" in r.stderr and len(r.stderr.strip().splitlines()) == 1,
           f"an unknown target quantity: exit {r.returncode}, {r.stderr.strip()}")
+    # An iceberg target where no member calved (the column absent from members.csv): none accepted, not an error.
+    nocalve = os.path.join(d, "nocalve")
+    shutil.copytree(ref, nocalve)
+    t2 = read_csv(os.path.join(nocalve, "members.csv"))
+    keep = [k for k in t2 if not k.startswith("iceberg_")]
+    with open(os.path.join(nocalve, "members.csv"), "w") as f:
+        f.write(",".join(keep) + "\n")
+        for i in range(len(t2["member"])):
+            f.write(",".join("" if isinstance(t2[k][i], float) and not np.isfinite(t2[k][i]) else str(t2[k][i])
+                             for k in keep) + "\n")
+    r = ensemble("calibrate", nocalve, tpath)
+    check(r.returncode == 0, f"calibrate without any iceberg exited {r.returncode}: {r.stderr}")
+    with open(os.path.join(nocalve, "calibration.json")) as f:
+        check(json.load(f)["accepted_count"] == 0, "a member accepted on an iceberg no member made")
 
 
 def slurm_up():

@@ -61,7 +61,7 @@ class CheckpointValidation : public ::testing::Test {
 };
 
 TEST_F(CheckpointValidation, TheRunsOwnCheckpointLoads) {
-  EXPECT_EQ(bytes_.substr(0, 8), "CDMPMCK9");
+  EXPECT_EQ(bytes_.substr(0, 8), "CDMPMCKA");
   EXPECT_NO_THROW(load(*dir_ / "run/checkpoint.bin"));
 }
 

@@ -101,7 +101,7 @@ TEST(ShearStrength, LiesOnTheYieldSurfaceAndHasTheVonMisesLimits) {
       // The same through the invariants of the stress tensor itself.
       Mat<2> tau = Mat<2>::Zero();
       tau(0, 1) = tau(1, 0) = ts;
-      EXPECT_NEAR(CohesiveCamClay::mises<2>(tau), std::sqrt(3.0) * ts, 1e-12 * ts);
+      EXPECT_NEAR(CohesiveCamClay{}.mises<2>(tau), std::sqrt(3.0) * ts, 1e-12 * ts);
     }
   // von Mises limit (M -> 0): tau_s / sigma_t -> 1/2 in 2D (the in-plane convention), 1/sqrt(3) in 3D. The
   // correction is of order the strength over p0, i.e. M: M = 1e-4 leaves it below 1e-3.
@@ -194,7 +194,7 @@ TEST(CrackStartsBar, BarPulledInTensionRecordsTension) {
   const nlohmann::json& mj = probe.json.at("materials").at("ice");
   const double E = mj.at("youngs_modulus").get<double>(), nu = probe.parameters.at("nu");
   const double rho = mj.at("density").get<double>(), sigma_t = mj.at("tensile_strength").get<double>();
-  const NeoHookeanSplit el = NeoHookeanSplit::from_young_poisson(E, nu, 2);
+  const NeoHookeanSplit el = NeoHookeanSplit::from_young_poisson(E, nu);
   const double release = 1.5 / std::sqrt(el.p_wave_modulus<2>() / rho);
   const double rate = sigma_t * (1 - nu * nu) / E / (0.25 * release), end = 0.9 * release;
   const Scene scene = load_scene(testing::source_path("scenes/ice_bar_2d.json"),

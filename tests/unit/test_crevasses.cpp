@@ -399,7 +399,7 @@ TEST(Crevasses, BadKeysAreRefusedNamingTheKey) {
                                    {"spacing", 1e-4, "bodies[0].crevasses"},  // 4 million crevasses
                                    {"water_depth", -1, "bodies[0].crevasses.water_depth"},
                                    {"water_depth", 20, "bodies[0].crevasses"},  // no water_material
-                                   {"water_material", "water", "bodies[0].crevasses.water_material"}};  // no water_depth
+                                   {"water_material", "ice", "bodies[0].crevasses.water_material"}};  // not a fluid
   for (const auto& c : cases) {
     nlohmann::json cr = good;
     cr[c.key] = c.value;
