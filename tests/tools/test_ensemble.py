@@ -30,6 +30,9 @@ TOOL = os.path.join(ROOT, "tools", "ensemble")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from plot_style import read_asc, read_csv  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from harness import TESTS, Failure, check, test  # noqa: E402
+
 import numpy as np  # noqa: E402
 
 CALVING = os.path.join(ROOT, "scenes", "calving_front_2d.json")
@@ -42,21 +45,6 @@ PRODUCTS = ["members.csv", "gauges_bands.csv", "hazard_bands.csv", "plots/gauges
 MEMBER_FILES = ["probes.csv", "waves.csv", "hazard.csv", "icebergs.csv"]
 
 ARGS = None
-TESTS = []
-
-
-def test(fn):
-    TESTS.append(fn)
-    return fn
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, what):
-    if not cond:
-        raise Failure(what)
 
 
 def work(name):
