@@ -12,19 +12,19 @@
 namespace cdmpm {
 namespace {
 
-struct Context {
+struct ProjContext {
   PJ_CONTEXT* ctx = proj_context_create();
-  ~Context() { proj_context_destroy(ctx); }
+  ~ProjContext() { proj_context_destroy(ctx); }
 };
-struct Object {
+struct ProjObject {
   PJ* pj;
-  ~Object() {
+  ~ProjObject() {
     if (pj) proj_destroy(pj);
   }
 };
 
 // The value of the projection parameter of EPSG code `code` (in degrees for angles, metres for lengths), if any.
-bool parameter(PJ_CONTEXT* ctx, PJ* op, int code, double& value) {
+bool projection_parameter(PJ_CONTEXT* ctx, PJ* op, int code, double& value) {
   const int n = proj_coordoperation_get_param_count(ctx, op);
   for (int i = 0; i < n; ++i) {
     const char *name = nullptr, *auth = nullptr, *id = nullptr, *unit_name = nullptr, *unit_auth = nullptr,
@@ -43,8 +43,8 @@ bool parameter(PJ_CONTEXT* ctx, PJ* op, int code, double& value) {
 
 // CF appendix F: the grid mapping of the projection methods with EPSG codes 9807 (Transverse Mercator), 9810 and
 // 9829 (Polar Stereographic A and B) and 9802 (Lambert Conic Conformal 2SP); none for other methods.
-void cf_mapping(PJ_CONTEXT* ctx, PJ* crs, Crs& out) {
-  Object op{proj_crs_get_coordoperation(ctx, crs)};
+void cf_grid_mapping(PJ_CONTEXT* ctx, PJ* crs, Crs& out) {
+  ProjObject op{proj_crs_get_coordoperation(ctx, crs)};
   if (!op.pj) return;
   const char *method = nullptr, *auth = nullptr, *code = nullptr;
   if (!proj_coordoperation_get_method_info(ctx, op.pj, &method, &auth, &code) || !code) return;
@@ -52,7 +52,7 @@ void cf_mapping(PJ_CONTEXT* ctx, PJ* crs, Crs& out) {
   auto& p = out.cf_parameters;
   auto take = [&](int epsg_code, const char* cf_name) {
     double v;
-    if (parameter(ctx, op.pj, epsg_code, v)) p[cf_name].push_back(v);
+    if (projection_parameter(ctx, op.pj, epsg_code, v)) p[cf_name].push_back(v);
   };
   take(8806, "false_easting");
   take(8807, "false_northing");
@@ -83,7 +83,7 @@ void cf_mapping(PJ_CONTEXT* ctx, PJ* crs, Crs& out) {
     p.clear();
     return;
   }
-  Object ellipsoid{proj_get_ellipsoid(ctx, crs)};
+  ProjObject ellipsoid{proj_get_ellipsoid(ctx, crs)};
   double a = 0, b = 0, inverse_flattening = 0;
   int computed = 0;
   if (ellipsoid.pj && proj_ellipsoid_get_parameters(ctx, ellipsoid.pj, &a, &b, &computed, &inverse_flattening)) {
@@ -96,16 +96,16 @@ void cf_mapping(PJ_CONTEXT* ctx, PJ* crs, Crs& out) {
 
 Crs resolve_crs(const std::string& text) {
   if (text.empty() || text.size() > 65536) throw std::invalid_argument("expected an EPSG code (\"EPSG:32624\") or WKT");
-  Context c;
+  ProjContext c;
   proj_log_level(c.ctx, PJ_LOG_NONE);
-  Object crs{proj_create(c.ctx, text.c_str())};
+  ProjObject crs{proj_create(c.ctx, text.c_str())};
   if (!crs.pj)
     throw std::invalid_argument("expected an EPSG code (\"EPSG:32624\") or WKT that PROJ knows (" +
                                 std::string(proj_context_errno_string(c.ctx, proj_context_errno(c.ctx))) + ")");
   if (proj_get_type(crs.pj) != PJ_TYPE_PROJECTED_CRS)
     throw std::invalid_argument("expected a projected coordinate reference system (easting, northing in metres), got " +
                                 std::string(proj_get_name(crs.pj) ? proj_get_name(crs.pj) : "another kind"));
-  Object cs{proj_crs_get_coordinate_system(c.ctx, crs.pj)};
+  ProjObject cs{proj_crs_get_coordinate_system(c.ctx, crs.pj)};
   for (int axis = 0; axis < 2; ++axis) {
     double to_metres = 0;
     const char* unit = nullptr;
@@ -127,7 +127,7 @@ Crs resolve_crs(const std::string& text) {
     if (!text) throw std::invalid_argument("expected a coordinate reference system that WKT 1 can express");
     *target = text;
   }
-  cf_mapping(c.ctx, crs.pj, out);
+  cf_grid_mapping(c.ctx, crs.pj, out);
   return out;
 }
 

@@ -19,7 +19,7 @@ void cf_global_attributes(NetcdfFile& f, const Scene& scene, const std::string& 
 }
 
 namespace {
-void describe(NetcdfFile& f, int v, const CfVariable& c) {
+void cf_describe(NetcdfFile& f, int v, const CfVariable& c) {
   f.attribute(v, "long_name", c.long_name);
   f.attribute(v, "units", c.units);
   if (!c.standard_name.empty()) f.attribute(v, "standard_name", c.standard_name);
@@ -29,7 +29,7 @@ void describe(NetcdfFile& f, int v, const CfVariable& c) {
 
 int cf_coordinate(NetcdfFile& f, const CfVariable& c, const std::vector<int>& dims, const std::string& axis) {
   const int v = f.variable(c.name, NC_DOUBLE, dims);
-  describe(f, v, c);
+  cf_describe(f, v, c);
   if (!axis.empty()) f.attribute(v, "axis", axis);
   return v;
 }
@@ -38,7 +38,7 @@ int cf_data(NetcdfFile& f, const CfVariable& c, const std::vector<int>& dims, co
             const Scene& scene) {
   const int v = f.variable(c.name, NC_DOUBLE, dims);
   f.attribute(v, "_FillValue", std::numeric_limits<double>::quiet_NaN());
-  describe(f, v, c);
+  cf_describe(f, v, c);
   if (!coordinates.empty()) f.attribute(v, "coordinates", coordinates);
   if (scene.georeference.crs) f.attribute(v, "grid_mapping", "crs");
   return v;

@@ -13,7 +13,7 @@ namespace {
 // The quantities a station can have, in file order, with their CF description (standard names from the CF
 // standard name table: d is the depth of the sea floor (the bed the water covers) below the surface; u, v the
 // depth-averaged, barotropic, velocity).
-const std::vector<CfVariable>& quantities() {
+const std::vector<CfVariable>& station_quantities() {
   static const std::vector<CfVariable> q = {
       {"eta", "free-surface elevation above the still water level", "m", "sea_surface_height_above_mean_sea_level"},
       {"d", "total water depth", "m", "sea_floor_depth_below_sea_surface"},
@@ -54,9 +54,9 @@ void write_station_file(const std::string& path, const std::string& probes_csv, 
                          "station_name", scene);
   const int sv = cf_data(f, {"still_level", "still water level above the domain's floor", "m", ""}, {station},
                          "station_name", scene);
-  // The quantities any station has, in the order of quantities().
+  // The quantities any station has, in the order of station_quantities().
   std::vector<CfVariable> present;
-  for (const CfVariable& q : quantities())
+  for (const CfVariable& q : station_quantities())
     if (std::any_of(stations.begin(), stations.end(), [&](const Station& s) {
           return std::any_of(s.variables.begin(), s.variables.end(), [&](const auto& v) { return v.first == q.name; });
         }))

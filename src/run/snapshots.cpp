@@ -13,9 +13,9 @@
 namespace cdmpm {
 namespace {
 
-constexpr double kFill = std::numeric_limits<double>::quiet_NaN();
+constexpr double kSnapshotFill = std::numeric_limits<double>::quiet_NaN();
 
-bool fluid(const Material& m, int) {
+bool snapshot_material(const Material& m, int) {
   return m.traits().fluid;
 }
 
@@ -35,10 +35,10 @@ template <int dim>
 void Snapshots<dim>::start(Simulation<dim>& sim) {
   if (!active()) return;
   const auto& points = sampler_->stations();
-  still_.assign(points.size(), spec_->still_level.value_or(kFill));
+  still_.assign(points.size(), spec_->still_level.value_or(kSnapshotFill));
   if (!spec_->still_level) {
-    const auto columns = sampler_->measure(sim, fluid);
-    for (size_t k = 0; k < points.size(); ++k) still_[k] = columns[k].wet() ? columns[k].top : kFill;
+    const auto columns = sampler_->measure(sim, snapshot_material);
+    for (size_t k = 0; k < points.size(); ++k) still_[k] = columns[k].wet() ? columns[k].top : kSnapshotFill;
   }
   std::vector<double> bed(points.size());
   for (size_t k = 0; k < points.size(); ++k)
@@ -123,14 +123,14 @@ void Snapshots<dim>::sample(Simulation<dim>& sim) {
   size_t k = 0;
   while (k < spec_->times.size() && std::abs(spec_->times[k] - t) > tolerance) ++k;
   if (k == spec_->times.size()) return;
-  const auto columns = sampler_->measure(sim, fluid);  // collective
+  const auto columns = sampler_->measure(sim, snapshot_material);  // collective
   sim.on_root([&] {
     const size_t n = columns.size();
     std::vector<double> eta(n), d(n), hu(n), hv(n);
     for (size_t p = 0; p < n; ++p) {
       const auto& c = columns[p];
       d[p] = c.wet() ? c.top - c.bottom : 0.0;
-      eta[p] = c.wet() ? c.top - still_[p] : kFill;
+      eta[p] = c.wet() ? c.top - still_[p] : kSnapshotFill;
       hu[p] = d[p] * c.u[0];
       if constexpr (dim == 3) hv[p] = d[p] * c.u[1];
     }
