@@ -19,14 +19,12 @@ Each test prints PASS or FAIL with the reason; the last line is "N passed, M fai
   - bad keys (snapshots, georeference.crs, georeference.time_origin) stop the program with exit code 2 and a
     message naming the key, writing nothing.
 """
-import argparse
 import json
 import math
 import os
 import shutil
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 from netCDF4 import Dataset
@@ -36,7 +34,8 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_style import read_asc, read_csv  # noqa: E402
 import cf_rules  # noqa: E402
-from harness import TESTS, Failure, check, test  # noqa: E402
+import harness  # noqa: E402
+from harness import check, test  # noqa: E402
 
 HANDOFF = os.path.join(ROOT, "scenes", "handoff_2d.json")
 CELLS = 4  # cells per depth of the coarse 2D run
@@ -276,13 +275,17 @@ def snapshots_change_no_bit_and_are_reproducible():
     del scene["output"]["snapshots"]
     plain = os.path.join(ARGS.work, "plain.json")
     json.dump(scene, open(plain, "w"))
-    cdmpm("run", plain, "--out", base + "_plain", "--threads", "2", *plain_sets)
+    # With frames, whose particle arrays are the state bit for bit (probes.csv has 10 significant digits).
+    frames = ["--set", "output.frames=true"]
+    cdmpm("run", plain, "--out", base + "_plain", "--threads", "2", *plain_sets, *frames)
+    cdmpm("run", HANDOFF, "--out", base + "_frames", "--threads", "2", *common, *frames)
     cdmpm("run", HANDOFF, "--out", base + "_2", "--threads", "2", *common)
     cdmpm("run", HANDOFF, "--out", base + "_1", "--threads", "1", *common)
     cdmpm("run", HANDOFF, "--out", base + "_half", "--threads", "2", *common, "--set", "time.end=1.5")
     cdmpm("run", "--resume", base + "_half", "--threads", "2", "--quiet", "--set", "time.end=3")
     read = lambda d, f: open(os.path.join(d, f), "rb").read()  # noqa: E731
-    check(read(base + "_plain", "probes.csv") == read(base + "_2", "probes.csv"), "snapshots changed probes.csv")
+    for f in ("probes.csv", "particles_0001.vtu", "particles_0003.vtu"):
+        check(read(base + "_plain", f) == read(base + "_frames", f), f"snapshots changed {f}")
     for f in ("snapshots.nc", "stations.nc", "probes.csv"):
         check(read(base + "_2", f) == read(base + "_1", f), f"{f} differs between 1 and 2 threads")
         check(read(base + "_2", f) == read(base + "_half", f), f"{f} differs after a resume")
@@ -333,33 +336,10 @@ def bad_keys_are_input_errors_naming_the_key():
         check(not os.path.exists(out), f"{setting}: {out} written")
 
 
-def main():
+def use_args(args):
     global ARGS
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--cdmpm", required=True)
-    ap.add_argument("--work", help="work folder (default: a temporary one, removed unless --keep)")
-    ap.add_argument("--keep", action="store_true")
-    ap.add_argument("-k", help="run only the tests whose name contains this")
-    ARGS = ap.parse_args()
-    temporary = ARGS.work is None
-    ARGS.work = ARGS.work or tempfile.mkdtemp(prefix="cdmpm_netcdf_")
-    os.makedirs(ARGS.work, exist_ok=True)
-    passed = failed = 0
-    for fn in TESTS:
-        if ARGS.k and ARGS.k not in fn.__name__:
-            continue
-        try:
-            fn()
-            print(f"PASS {fn.__name__}")
-            passed += 1
-        except Failure as e:
-            print(f"FAIL {fn.__name__}: {e}")
-            failed += 1
-    print(f"{passed} passed, {failed} failed")
-    if temporary and not ARGS.keep:
-        shutil.rmtree(ARGS.work, ignore_errors=True)
-    sys.exit(1 if failed else 0)
+    ARGS = args
 
 
 if __name__ == "__main__":
-    main()
+    harness.main(__doc__, "cdmpm_netcdf_", use_args)
