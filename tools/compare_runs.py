@@ -10,7 +10,7 @@ present in only one of them is a difference. Per run folder it checks:
   - probes.csv, icebergs.csv and waves.csv: byte for byte (the first differing line is printed); the hazard
     products and crevasses.csv likewise when both runs wrote them;
   - stations.nc, snapshots.nc, hazard.nc, when both runs wrote them: every variable's values bit for bit and its
-    attributes, the global attributes but "source" (the build's commit) (python3-netcdf4);
+    attributes, the global attributes but "source" (the program's version) (python3-netcdf4);
   - particles.pvd: the same frame list (file names and the bits of every time);
   - every frame particles_NNNN.vtu, read through tools/vtu.py (so any encoding vtu.py reads): the particle count,
     the points, and every point-data array present in BOTH frames: the same type, shape and bits (two NaNs are
@@ -42,7 +42,7 @@ HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_t
                 "inundation_depth.asc", "crevasses.csv", "crack_starts.csv")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
 # The netCDF outputs (docs/running.md#netcdf-outputs): every variable's values bit for bit and every attribute, but
-# the global "source", which names the build's commit; compared when both runs wrote them (needs python3-netcdf4).
+# the global "source", which names the program's version; compared when both runs wrote them (needs python3-netcdf4).
 NETCDF_FILES = ("stations.nc", "snapshots.nc", "hazard.nc")
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
                 "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file", "phase_seconds",

@@ -9,8 +9,10 @@ void cf_global_attributes(NetcdfFile& f, const Scene& scene, const std::string& 
   f.attribute(NC_GLOBAL, "Conventions", "CF-1.8");
   f.attribute(NC_GLOBAL, "title", title + " of scene " + scene.name);
   f.attribute(NC_GLOBAL, "institution", "cdmpm");
-  f.attribute(NC_GLOBAL, "source", std::string("cdmpm ") + CDMPM_VERSION + " (commit " + CDMPM_GIT_COMMIT +
-                                       "), Material Point Method simulation of scene " + scene.path);
+  // No commit or date here (run.json and summary.json beside the file record them), so that the same results give
+  // the same bytes from any build of the same version.
+  f.attribute(NC_GLOBAL, "source", std::string("cdmpm ") + CDMPM_VERSION +
+                                       ", Material Point Method simulation of scene " + scene.path);
   f.attribute(NC_GLOBAL, "references", "docs/running.md and docs/handoff.md of cdmpm");
   f.attribute(NC_GLOBAL, "comment",
               "Heights (bed, still_level, d) are metres above the domain's floor z = 0; horizontal coordinates x, y "
