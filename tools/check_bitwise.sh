@@ -47,6 +47,7 @@ CASES=(
   "ice_rise_contact_2d|output.frames=true time.end=0.05 time.frame_interval=0.025|the ice block in a field of its own (sim/field_contact.h) starting to rise; ~1000 steps to 0.05 s"
   "sliding_block_2d|time.end=2 time.frame_interval=0.5|the push starts; ~1000 steps of 20k particles (the first iceberg needs 100+ s: not cheap)"
   "solitary_runup_2d|output.frames=true time.end=1 time.frame_interval=0.25|the solitary wave travels 3 h along the tank (hazard record, solitary_wave initial state); ~1100 steps of 12.6k particles (full run 6.5 s; frames turned on)"
+  "handoff_2d|parameters.cells_per_h=4 output.frames=true time.end=2 time.frame_interval=0.5 output.snapshots.times=[0,1,2]|the solitary wave travels 6.5 h along the channel, with gauges, a section and snapshots (hand-off outputs); ~1300 steps of 3.8k particles at 4 cells per h (full run 13 s; frames turned on)"
   "wave_celerity_2d|output.frames=true time.end=0.4 time.frame_interval=0.1|the released box starts the wave; ~680 steps of 22k particles (full run 4.5 s; frames turned on)"
 )
 

@@ -9,6 +9,8 @@ present in only one of them is a difference. Per run folder it checks:
 
   - probes.csv, icebergs.csv and waves.csv: byte for byte (the first differing line is printed); the hazard
     products and crevasses.csv likewise when both runs wrote them;
+  - stations.nc, snapshots.nc, hazard.nc, when both runs wrote them: every variable's values bit for bit and its
+    attributes, the global attributes but "source" (the program's version) (python3-netcdf4);
   - particles.pvd: the same frame list (file names and the bits of every time);
   - every frame particles_NNNN.vtu, read through tools/vtu.py (so any encoding vtu.py reads): the particle count,
     the points, and every point-data array present in BOTH frames: the same type, shape and bits (two NaNs are
@@ -39,6 +41,9 @@ TEXT_FILES = ("probes.csv", "icebergs.csv", "waves.csv")
 HAZARD_FILES = ("hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
                 "inundation_depth.asc", "crevasses.csv", "crack_starts.csv")
 # summary.json keys that depend on the host, the build or the thread count, not on the results.
+# The netCDF outputs (docs/running.md#netcdf-outputs): every variable's values bit for bit and every attribute, but
+# the global "source", which names the program's version; compared when both runs wrote them (needs python3-netcdf4).
+NETCDF_FILES = ("stations.nc", "snapshots.nc", "hazard.nc")
 SUMMARY_SKIP = {"wall_time", "setup_wall_time", "particle_steps_per_second", "stepping_particle_steps_per_second",
                 "peak_memory_bytes", "bytes_per_particle", "threads", "version", "scene_file", "phase_seconds",
                 "command_line", "git_commit"}
@@ -76,6 +81,34 @@ def compare_text(name, a, b, report):
             return False
     report(f"  {name}: DIFFERS: REF has {len(la)} lines, NEW {len(lb)} (one is a prefix of the other)")
     return False
+
+
+def compare_netcdf(name, a, b, report):
+    """Values (bit for bit, NaN included) and attributes of every variable of one netCDF file; False on a difference."""
+    try:
+        from netCDF4 import Dataset
+    except ImportError:
+        report(f"  {name}: not compared (python3-netcdf4 missing)")
+        return True
+    with Dataset(os.path.join(a, name)) as x, Dataset(os.path.join(b, name)) as y:
+        if set(x.variables) != set(y.variables):
+            report(f"  {name}: DIFFERS: variables {sorted(x.variables)} against {sorted(y.variables)}")
+            return False
+        ga = {k: str(x.getncattr(k)) for k in x.ncattrs() if k != "source"}
+        gb = {k: str(y.getncattr(k)) for k in y.ncattrs() if k != "source"}
+        if ga != gb:
+            report(f"  {name}: DIFFERS in its global attributes")
+            return False
+        for v in x.variables:
+            va, vb = x.variables[v], y.variables[v]
+            va.set_auto_maskandscale(False)
+            vb.set_auto_maskandscale(False)
+            if np.asarray(va[:]).tobytes() != np.asarray(vb[:]).tobytes() or \
+                    {k: str(va.getncattr(k)) for k in va.ncattrs()} != {k: str(vb.getncattr(k)) for k in vb.ncattrs()}:
+                report(f"  {name}: DIFFERS in variable {v}")
+                return False
+    report(f"  {name}: identical", detail=True)
+    return True
 
 
 def float_bits(x):
@@ -239,6 +272,11 @@ def compare_run(a, b, name, verbose):
     for f in HAZARD_FILES:
         if os.path.exists(os.path.join(a, f)) and os.path.exists(os.path.join(b, f)):
             ok &= compare_text(f, a, b, report)
+        elif os.path.exists(os.path.join(a, f)) or os.path.exists(os.path.join(b, f)):
+            report(f"  {f}: only in {'REF' if os.path.exists(os.path.join(a, f)) else 'NEW'} (not compared)")
+    for f in NETCDF_FILES:
+        if os.path.exists(os.path.join(a, f)) and os.path.exists(os.path.join(b, f)):
+            ok &= compare_netcdf(f, a, b, report)
         elif os.path.exists(os.path.join(a, f)) or os.path.exists(os.path.join(b, f)):
             report(f"  {f}: only in {'REF' if os.path.exists(os.path.join(a, f)) else 'NEW'} (not compared)")
     ok &= compare_frames(a, b, report, stats)

@@ -2,7 +2,8 @@
 """dem_to_terrain.py - turns a DEM (GeoTIFF, netCDF, any raster GDAL reads) into a terrain file for the
 "bathymetry" boundary's "file" key (docs/scenes.md#terrain-from-files, src/terrain/terrain_file.h):
 
-  grid      an ESRI ASCII grid (.asc) with square cells, north-up, optionally cropped and resampled
+  grid      an ESRI ASCII grid (.asc) with square cells, north-up, optionally cropped and resampled, with the DEM's
+            CRS in a .prj beside it
   transect  a CSV profile (distance, elevation) sampled bilinearly along a straight line
 
     /usr/bin/python3 tools/dem_to_terrain.py grid DEM OUT.asc [--bounds XMIN YMIN XMAX YMAX] [--cellsize S]
@@ -13,6 +14,7 @@ the variable of a netCDF file. Needs GDAL's Python bindings (Debian: python3-gda
 """
 import argparse
 import math
+import os
 import sys
 
 
@@ -69,6 +71,12 @@ def write_grid(gdal, ds, out, band, bounds, cellsize):
                 f"cellsize {size!r}\nNODATA_value -9999\n")
         for r in range(nrows):  # north-up: the first row is the northernmost
             f.write(" ".join("-9999" if missing[r, c] else f"{a[r, c]:.3f}" for c in range(ncols)) + "\n")
+    srs = ds.GetSpatialRef()
+    if srs is not None:  # the DEM's CRS beside the grid (ESRI WKT, as GDAL and QGIS read a .prj)
+        esri = srs.Clone()
+        esri.MorphToESRI()
+        with open(os.path.splitext(out)[0] + ".prj", "w") as f:
+            f.write(esri.ExportToWkt() + "\n")
     print(f"{out}: {ncols} x {nrows} cells of {size} m, {int(missing.sum())} NODATA")
 
 

@@ -1,13 +1,15 @@
 #!/usr/bin/python3
 """plot_probes.py - plot the columns of a cdmpm run's probes.csv against time, one panel per column, each axis
 labelled with its quantity and unit (from the probe types in the run's scene.resolved.json; in 2D, extensive
-quantities are per metre of width).
+quantities are per metre of width). A section probe (docs/scenes.md#section-probe) gets one panel per quantity
+(eta, d, u, q; in 3D eta, d, u, v, qx, qy), its stations as lines labelled with their position.
 
     /usr/bin/python3 tools/plot_probes.py RUN_DIR [--columns p_bottom ke] [--out FOLDER]
 The figure goes to FOLDER/probes.png (default: RUN_DIR/plots); a folder holding committed files is refused
 (--force overrides). Needs numpy and matplotlib (Debian's /usr/bin/python3).
 """
 import argparse
+import json
 import os
 import sys
 
@@ -15,6 +17,43 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_style import fail, output_folder, probe_units  # noqa: E402
 
 TOOL = "plot_probes"
+
+# The quantities of a section probe's stations: column suffix -> axis label.
+SECTION_QUANTITIES = {
+    "eta": "free-surface elevation eta [m]", "d": "total depth d [m]", "u": "depth-averaged u [m/s]",
+    "v": "depth-averaged v [m/s]", "q": "discharge q = d u [m²/s]", "qx": "discharge qx = d u [m²/s]",
+    "qy": "discharge qy = d v [m²/s]"}
+
+
+def section_panels(run, names):
+    """[(axis label, [(column, line label), ...]), ...] for the section probes of the run's scene.resolved.json
+    whose columns are in `names`, one panel per quantity."""
+    try:
+        scene = json.load(open(os.path.join(run, "scene.resolved.json")))
+    except (OSError, ValueError):
+        return []
+    probes = scene.get("probes", {})
+    panels = []
+    for p in probes.get("list", []) if isinstance(probes, dict) else []:
+        if p.get("type") != "section":
+            continue
+        name = p["name"]
+        if "position" in p:  # 2D: one station
+            stations = [(name, f"x = {p['position'][0]:g} m")]
+            fields = ["eta", "d", "u", "q"]
+        else:
+            n, a, b = p["points"], p["start"], p["end"]
+            stations = []
+            for k in range(n):
+                f = k / (n - 1)
+                x, y = (1 - f) * a[0] + f * b[0], (1 - f) * a[1] + f * b[1]
+                stations.append((f"{name}_{k}", f"station {k} ({x:g}, {y:g}) m"))
+            fields = ["eta", "d", "u", "v", "qx", "qy"]
+        for q in fields:
+            lines = [(f"{prefix}_{q}", label) for prefix, label in stations if f"{prefix}_{q}" in names]
+            if lines:
+                panels.append((f"{name}: {SECTION_QUANTITIES[q]}", lines))
+    return panels
 
 
 def main():
@@ -49,12 +88,19 @@ def main():
     if not columns:
         fail(TOOL, f"{csv}: no probe columns")
     units = probe_units(run)
+    # Sections: one panel per quantity with every station; the other columns one panel each.
+    sections = section_panels(run, set(columns))
+    in_sections = {c for _, lines in sections for c, _ in lines}
+    panels = [(units.get(c, c), [(c, None)]) for c in columns if c not in in_sections] + sections
     folder = output_folder(TOOL, args.out or os.path.join(run, "plots"), args.force)
     data = np.atleast_1d(data)
-    fig, axes = plt.subplots(len(columns), 1, sharex=True, squeeze=False, figsize=(7, 1.0 + 2.2 * len(columns)))
-    for ax, c in zip(axes[:, 0], columns):
-        ax.plot(data["time"], data[c], lw=1.2, label=c)
-        ax.set_ylabel(units.get(c, c), fontsize=8)
+    fig, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False, figsize=(7, 1.0 + 2.2 * len(panels)))
+    for ax, (label, lines) in zip(axes[:, 0], panels):
+        for c, line_label in lines:
+            ax.plot(data["time"], data[c], lw=1.2, label=line_label or c)
+        if len(lines) > 1 or lines[0][1]:
+            ax.legend(fontsize=7, loc="upper right")
+        ax.set_ylabel(label, fontsize=8)
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time [s]")
     axes[0, 0].set_title(csv, fontsize=8)

@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "boundary/mirror.h"
+#include "terrain/height_field.h"
 #include "terrain/terrain_file.h"
 
 namespace cdmpm {
@@ -124,17 +125,16 @@ class HeightField3D final : public Boundary<3> {
     well_balanced_ = well_balanced_of(r, n, condition_);
     reach_ = bed_layer_cells * dx;
     if (const auto t = terrain_of(r, n)) {
-      ox_ = t->origin[0], oy_ = t->origin[1], sx_ = t->spacing[0], sy_ = t->spacing[1];
-      h_ = t->heights;
+      field_ = {t->origin[0], t->origin[1], t->spacing[0], t->spacing[1], t->heights};
       return;
     }
     const std::vector<double> origin = r.numbers(r.required(n, "origin"), 2);
     const std::vector<double> spacing = r.numbers(r.required(n, "spacing"), 2, gt(0));
-    ox_ = origin[0], oy_ = origin[1], sx_ = spacing[0], sy_ = spacing[1];
+    field_ = {origin[0], origin[1], spacing[0], spacing[1], {}};
     Node heights = r.required(n, "heights");
     size_t rows = r.array(heights, 2, "an array of at least 2 rows of heights");
     size_t cols = r.array(heights[0], 2, "an array of at least 2 heights");
-    for (size_t row = 0; row < rows; ++row) h_.push_back(r.numbers(heights[row], cols));
+    for (size_t row = 0; row < rows; ++row) field_.h.push_back(r.numbers(heights[row], cols));
   }
   bool is_solid(const Vec<3>& x) const override {
     double dhdx, dhdy;
@@ -163,20 +163,9 @@ class HeightField3D final : public Boundary<3> {
   }
 
  private:
-  // Bilinear height at (x, y) and its gradient.
-  double height(const Vec<3>& x, double& dhdx, double& dhdy) const {
-    const int nx = static_cast<int>(h_[0].size()), ny = static_cast<int>(h_.size());
-    const double u = std::clamp((x[0] - ox_) / sx_, 0.0, nx - 1.0), w = std::clamp((x[1] - oy_) / sy_, 0.0, ny - 1.0);
-    const int i = std::min(static_cast<int>(u), nx - 2), j = std::min(static_cast<int>(w), ny - 2);
-    const double fu = u - i, fw = w - j;
-    const double h00 = h_[j][i], h10 = h_[j][i + 1], h01 = h_[j + 1][i], h11 = h_[j + 1][i + 1];
-    const double h = (1 - fw) * ((1 - fu) * h00 + fu * h10) + fw * ((1 - fu) * h01 + fu * h11);
-    dhdx = ((1 - fw) * (h10 - h00) + fw * (h11 - h01)) / sx_;
-    dhdy = ((1 - fu) * (h01 - h00) + fu * (h11 - h10)) / sy_;
-    return h;
-  }
-  double ox_ = 0, oy_ = 0, sx_ = 1, sy_ = 1;
-  std::vector<std::vector<double>> h_;
+  // Bilinear height at (x, y) and its gradient (terrain/height_field.h).
+  double height(const Vec<3>& x, double& dhdx, double& dhdy) const { return field_.at(x[0], x[1], dhdx, dhdy); }
+  HeightField field_;
   bool well_balanced_ = false;
   Real reach_ = 0;  // bed_layer_cells dx
 };

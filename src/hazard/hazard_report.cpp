@@ -1,6 +1,9 @@
 // hazard_report.cpp - the hazard products (hazard_report.h).
 #include "hazard/hazard_report.h"
 
+#include "geo/crs.h"
+#include "hazard/hazard_grid_file.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -57,13 +60,21 @@ nlohmann::json largest_elevation(const HazardMap<dim>& m) {
   return j;
 }
 
-void write_csv_2d(const std::filesystem::path& out, const HazardMap<2>& m) {
+// Georeferenced: each column centre's map coordinates too, along the transect (GeoreferenceSpec::map_point).
+void write_csv_2d(const std::filesystem::path& out, const HazardMap<2>& m, const GeoreferenceSpec& geo) {
   std::ofstream os = open(out / "hazard.csv");
-  os << "x,bed,still_level,max_elevation,time_of_max,arrival_time,max_depth,earliest_arrival,arrival_threshold\n";
-  for (size_t c = 0; c < m.columns(); ++c)
+  os << "x,bed,still_level,max_elevation,time_of_max,arrival_time,max_depth,earliest_arrival,arrival_threshold"
+     << (geo.given ? ",easting,northing\n" : "\n");
+  for (size_t c = 0; c < m.columns(); ++c) {
     os << field(m.centre(c, 0)) << ',' << field(m.bed()[c]) << ',' << field(m.still_level()[c]) << ','
        << field(elevation(m, c)) << ',' << field(m.time_of_max()[c]) << ',' << field(m.arrival()[c]) << ','
-       << field(depth(m, c)) << ',' << field(m.earliest_arrival()[c]) << ',' << field(m.threshold(c)) << '\n';
+       << field(depth(m, c)) << ',' << field(m.earliest_arrival()[c]) << ',' << field(m.threshold(c));
+    if (geo.given) {
+      const std::array<double, 2> en = geo.map_point({m.centre(c, 0)});
+      os << ',' << field(en[0]) << ',' << field(en[1]);
+    }
+    os << '\n';
+  }
   if (m.shores().empty()) return;  // no run-up to tabulate: the summary says why
   std::ofstream rs = open(out / "runup.csv");
   rs << "shore,direction,shore_x,still_level,runup,runup_x,runup_time,extent_x,extent_time\n";
@@ -76,9 +87,10 @@ void write_csv_2d(const std::filesystem::path& out, const HazardMap<2>& m) {
   }
 }
 
-// One ESRI ASCII raster: the first row the northernmost (largest y).
+// One ESRI ASCII raster: the first row the northernmost (largest y); with the scene's CRS, its .prj beside it.
 void write_asc(const std::filesystem::path& p, const HazardMap<3>& m, const GeoreferenceSpec& geo,
                const std::function<double(size_t)>& value) {
+  if (geo.crs) write_prj(std::filesystem::path(p).replace_extension(".prj").string(), *geo.crs);
   std::ofstream os = open(p);
   os << "ncols " << m.count(0) << "\nnrows " << m.count(1) << "\nxllcorner " << field(geo.easting) << "\nyllcorner "
      << field(geo.northing) << "\ncellsize " << field(m.dx()) << "\nNODATA_value " << field(kNoData) << '\n';
@@ -137,6 +149,24 @@ nlohmann::json threshold_json(const HazardMap<dim>& m) {
           {"arrival_threshold_range", {lo, hi}}};
 }
 
+// The 3D maps: the four rasters and hazard.nc's layers (CF standard names where CF has one; the maxima over time
+// with cell_methods "time: maximum", CF section 7.3).
+std::vector<HazardLayer> layers_3d(const HazardMap<3>& m) {
+  const std::string eta = "sea_surface_height_above_mean_sea_level";
+  return {{{"max_elevation", "maximum free-surface elevation above the still water level", "m", eta, "time: maximum"},
+           [&m](size_t c) { return elevation(m, c); }, "max_elevation.asc"},
+          {{"max_elevation_time", "time of the maximum free-surface elevation since the start of the run", "s", ""},
+           [&m](size_t c) { return m.time_of_max()[c]; }, "max_elevation_time.asc"},
+          {{"arrival_time", "first arrival time of the wave since the start of the run", "s", ""},
+           [&m](size_t c) { return m.arrival()[c]; }, "arrival_time.asc"},
+          {{"inundation_depth", "maximum inundation depth of dry ground", "m", "", "time: maximum"},
+           [&m](size_t c) { return depth(m, c); }, "inundation_depth.asc"},
+          {{"bed", "bed height under the cell centre above the domain's floor", "m", ""},
+           [&m](size_t c) { return m.bed()[c]; }, ""},
+          {{"still_level", "still water level above the domain's floor (wet at the start)", "m", ""},
+           [&m](size_t c) { return m.still_level()[c]; }, ""}};
+}
+
 }  // namespace
 
 template <int dim>
@@ -145,17 +175,15 @@ nlohmann::json write_hazard_report(const std::string& out_dir, const HazardMap<d
   nlohmann::json j = threshold_json(m);
   j.update({{"interval", scene.hazard.interval}, {"columns", m.columns()}, {"max_elevation", largest_elevation(m)}});
   if constexpr (dim == 2) {
-    write_csv_2d(out, m);
+    write_csv_2d(out, m, scene.georeference);
     j["shores"] = shores_json(m);
     if (m.shores().empty())
       j["shores_reason"] = "no shore: no column dry at t = 0 (and held by no other material) beside a wet one "
                            "with its bed within dx of the still level; runup.csv not written";
   } else {
-    const GeoreferenceSpec& g = scene.georeference;
-    write_asc(out / "max_elevation.asc", m, g, [&](size_t c) { return elevation(m, c); });
-    write_asc(out / "max_elevation_time.asc", m, g, [&](size_t c) { return m.time_of_max()[c]; });
-    write_asc(out / "arrival_time.asc", m, g, [&](size_t c) { return m.arrival()[c]; });
-    write_asc(out / "inundation_depth.asc", m, g, [&](size_t c) { return depth(m, c); });
+    for (const HazardLayer& l : layers_3d(m))
+      if (!l.raster.empty()) write_asc(out / l.raster, m, scene.georeference, l.value);
+    write_hazard_grid((out / "hazard.nc").string(), m, layers_3d(m), scene);
     j.update(inundation_3d(m));
   }
   return j;

@@ -6,7 +6,9 @@
 //   3D  ESRI ASCII rasters (the format of the terrain input, terrain/terrain_file.h) max_elevation.asc,
 //       max_elevation_time.asc, arrival_time.asc, inundation_depth.asc, one cell per column, the lower-left
 //       corner at the scene's georeference (easting, northing) plus the domain's origin, NODATA_value -9999
-//       where a value is not defined;
+//       where a value is not defined, each with its .prj when the georeference has a CRS (geo/crs.h); and the
+//       same maps with the bed and still level as one CF grid, hazard.nc (hazard/hazard_grid_file.h);
+//   2D  hazard.csv's easting and northing of each column when georeferenced;
 // and the summary.json entry "hazard": arrival threshold, interval, the largest elevation and where, the shores'
 // run-up and inundation extent (2D), the run-up, inundated area and largest inundation depth (3D).
 #pragma once

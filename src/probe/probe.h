@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene_reader.h"
@@ -21,6 +22,16 @@ namespace cdmpm {
 // A probe's value where it measures nothing (a dry gauge, a section without water): written as nan.
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A place where a probe measures the water (a wave gauge, a station of a section): what the station file lists
+// (io/station_file.h). Its variables name the quantity ("eta", "d", "u", "v", "q", "qx", "qy", probe/section.cpp)
+// and the probes.csv column that holds it.
+struct Station {
+  std::string name;               // the probes.csv column prefix: the probe's name (with _k for a 3D section's station k)
+  std::vector<double> position;   // dim - 1 horizontal coordinates [m]
+  double still_level = kNaN;      // [m], NaN where none (dry at t = 0)
+  std::vector<std::pair<std::string, std::string>> variables;  // (quantity, probes.csv column)
+};
+
 template <int dim>
 class Probe {
  public:
@@ -28,6 +39,8 @@ class Probe {
   const std::string& name() const { return name_; }
   // Column names in probes.csv (default: the probe's name).
   virtual Strings columns() const { return {name_}; }
+  // The stations where the probe measures the water (none for integral probes).
+  virtual std::vector<Station> stations() const { return {}; }
   // Measures what the probe needs from the initial state.
   virtual void init(const Simulation<dim>&) {}
   // Appends one value per column.

@@ -17,6 +17,14 @@ std::string Probes<dim>::csv_header() const {
 }
 
 template <int dim>
+std::vector<Station> Probes<dim>::stations() const {
+  std::vector<Station> out;
+  for (const auto& p : probes_)
+    for (Station& s : p->stations()) out.push_back(std::move(s));
+  return out;
+}
+
+template <int dim>
 std::vector<double> Probes<dim>::sample(const Simulation<dim>& sim) const {
   std::vector<double> out;
   for (const auto& p : probes_) p->sample(sim, out);

@@ -17,6 +17,8 @@ class Probes {
   Probes(const Scene& scene, const Simulation<dim>& sim);
   std::vector<double> sample(const Simulation<dim>& sim) const;
   std::string csv_header() const;
+  // Every probe's stations, in probe order.
+  std::vector<Station> stations() const;
   // Every probe's state: per probe its size, then its values.
   std::vector<double> save_state() const;
   // Restores what save_state wrote; false if it does not fit these probes.

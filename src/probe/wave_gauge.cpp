@@ -23,6 +23,9 @@ class WaveGauge final : public Probe<dim> {
     r.inside(pos, position_, position_, "a position");
     if (n.has("still_level")) still_level_ = r.number(n["still_level"]), given_ = true;
   }
+  std::vector<Station> stations() const override {
+    return {{this->name_, position_, still_level_, {{"eta", this->name_}}}};
+  }
   void init(const Simulation<dim>& sim) override {
     if (!given_) still_level_ = surface_height(sim);
   }

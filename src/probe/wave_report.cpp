@@ -25,6 +25,7 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
 
   struct Row {
     std::string name;
+    std::vector<double> where;
     double x;
     double earliest;
     GaugeReading reading;
@@ -33,14 +34,16 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
   for (const ProbeSpec* g : gauges) {
     const std::vector<double> where = g->json.at("position").get<std::vector<double>>();
     const double earliest = bounds.earliest_arrival(where);
-    rows.push_back({g->name, where.at(0), earliest, read_gauge(t, probes.numbers(g->name), earliest, bounds.floor)});
+    rows.push_back({g->name, where, where.at(0), earliest, read_gauge(t, probes.numbers(g->name), earliest, bounds.floor)});
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.x < b.x; });
 
   std::ofstream csv(waves_csv, std::ios::trunc);
   if (!csv) throw std::runtime_error(waves_csv + ": cannot write");
   csv.precision(10);
-  csv << "gauge,x,amplitude,arrival_time,earliest_arrival,noise_floor,reason\n";
+  // Georeferenced: each gauge's map coordinates too (GeoreferenceSpec::map_point).
+  const bool map = scene.georeference.given;
+  csv << "gauge,x,amplitude,arrival_time,earliest_arrival,noise_floor," << (map ? "easting,northing," : "") << "reason\n";
   std::vector<double> xs, ts;
   double max_amplitude = 0;
   nlohmann::json pairs = nlohmann::json::array();
@@ -50,8 +53,12 @@ nlohmann::json wave_report(const Scene& scene, const std::string& probes_csv, co
     csv << r.name << ',' << r.x << ',';
     if (crest) csv << crest->amplitude << ',' << crest->time;
     else csv << ',';
-    csv << ',' << r.earliest << ',' << r.reading.noise_floor << ',' << (crest ? "" : "not arrived: " + r.reading.reason)
-        << '\n';
+    csv << ',' << r.earliest << ',' << r.reading.noise_floor << ',';
+    if (map) {
+      const std::array<double, 2> en = scene.georeference.map_point(r.where);
+      csv << en[0] << ',' << en[1] << ',';
+    }
+    csv << (crest ? "" : "not arrived: " + r.reading.reason) << '\n';
     if (!crest) continue;
     xs.push_back(r.x);
     ts.push_back(crest->time);

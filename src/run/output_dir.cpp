@@ -11,11 +11,13 @@ namespace cdmpm {
 namespace fs = std::filesystem;
 
 bool is_run_output_file(const std::string& name) {
-  static constexpr std::array<std::string_view, 19> kFixed = {
+  static constexpr std::array<std::string_view, 31> kFixed = {
       "particles.pvd", "probes.csv", "icebergs.csv",   "waves.csv",         "linear_waves.csv",
       "cauchy_poisson.csv", "summary.json", "checkpoint.bin", "checkpoint.bin.tmp", "run.json", "scene.resolved.json",
       "hazard.csv", "runup.csv", "max_elevation.asc", "max_elevation_time.asc", "arrival_time.asc",
-      "inundation_depth.asc", "crevasses.csv", "crack_starts.csv"};
+      "inundation_depth.asc", "crevasses.csv", "crack_starts.csv", "max_elevation.prj", "max_elevation_time.prj",
+      "arrival_time.prj", "inundation_depth.prj", "hazard.nc", "stations.nc", "snapshots.nc", "hazard.nc.part",
+      "stations.nc.part", "snapshots.nc.part", "terrain.vtp", "terrain.vtp.tmp"};
   if (std::find(kFixed.begin(), kFixed.end(), name) != kFixed.end()) return true;
   // A distributed run's checkpoint pieces (checkpoint_S_rR.bin, io/checkpoint.h), and their temporary names.
   if (name.starts_with("checkpoint_") && (name.ends_with(".bin") || name.ends_with(".bin.tmp"))) return true;

@@ -1,11 +1,15 @@
 // runner.cpp - the time loop (see runner.h). Output files under --out: particles_NNNN.vtu + particles.pvd
 // (frames; a distributed run: per-rank pieces under particles_NNNN.pvtu), probes.csv, icebergs.csv, checkpoint.bin (run/run_files.h), summary.json (run/summary.h), and
 // waves.csv for scenes with wave gauges (probe/wave_report.h), the hazard products for scenes with a fluid
-// (hazard/hazard_report.h).
+// (hazard/hazard_report.h), stations.nc for scenes with wave gauges or sections (io/station_file.h), snapshots.nc
+// for scenes with output.snapshots (run/snapshots.h), terrain.vtp for scenes with water over a bed
+// (io/terrain_surface.h).
 #include "run/runner.h"
 
 #include <omp.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -13,13 +17,17 @@
 #include <optional>
 #include <sstream>
 
+#include "hazard/bed_height.h"
 #include "hazard/hazard_report.h"
+#include "io/station_file.h"
+#include "io/terrain_surface.h"
 #include "parallel/reduction.h"
 #include "run/fault_injection.h"
 #include "run/interrupt.h"
 #include "run/output_schedule.h"
 #include "run/progress.h"
 #include "run/run_files.h"
+#include "run/snapshots.h"
 #include "run/summary.h"
 
 namespace cdmpm {
@@ -42,7 +50,7 @@ class TimeLoop {
  public:
   TimeLoop(const Scene& scene, const RunOptions& opt)
       : scene_(scene), opt_(opt), sim_(scene), probes_(scene, sim_), icebergs_(sim_), hazard_(sim_),
-        files_(opt.out_dir, sim_, probes_, icebergs_, hazard_),
+        files_(opt.out_dir, sim_, probes_, icebergs_, hazard_), snapshots_(sim_, files_.path("snapshots.nc").string()),
         frames_{scene.time.frame_interval}, samples_{scene.output.probe_interval},
         e0_(energy_totals(sim_.particles, sim_.materials, sim_.gravity)), progress_(opt.progress, 0, scene.time.end) {}
 
@@ -54,9 +62,13 @@ class TimeLoop {
     else {
       sim_.on_root([&] { files_.start(opt_.command_line); });
       files_.write_probes();
+      snapshots_.start(sim_);
       write_frame();
     }
-    if (!opt_.resume) hazard_.init(sim_);
+    if (!opt_.resume) {
+      hazard_.init(sim_);
+      sim_.on_root([&] { write_terrain(); });
+    }
     times_.setup = elapsed();
     progress_.start_at(sim_.time());
     RunResult result{"completed", "", 0};
@@ -85,7 +97,10 @@ class TimeLoop {
     files_.close();
     times_.wall = elapsed();
     nlohmann::json hazard;
-    sim_.on_root([&] { if (hazard_.active()) hazard = write_hazard_report(opt_.out_dir, hazard_, scene_); });
+    sim_.on_root([&] {
+      if (hazard_.active()) hazard = write_hazard_report(opt_.out_dir, hazard_, scene_);
+      write_stations();
+    });
     write_summary(opt_.out_dir, sim_, icebergs_, e0_, times_, result, opt_, hazard);
     return result;
   }
@@ -93,6 +108,7 @@ class TimeLoop {
  private:
   void resume() {
     files_.resume();
+    snapshots_.resume(sim_);
     frames_.resume_at(sim_.time(), files_.meta.frame_index);
     samples_.resume_at(sim_.time(), files_.meta.probe_index);
   }
@@ -120,6 +136,7 @@ class TimeLoop {
   void sample() {
     ++files_.meta.probe_index;
     files_.write_probes();
+    snapshots_.sample(sim_);
     if (!icebergs_.active()) return;
     if (files_.sample_icebergs() && opt_.progress)  // collective; the same first iceberg on every rank
       sim_.on_root([&] {
@@ -143,6 +160,27 @@ class TimeLoop {
     else sim_.on_root([&] { files_.write_frame(); });
     files_.write_frame_icebergs();
     files_.write_frame_pieces();
+  }
+
+  // terrain.vtp: the bed under every surface column of the hazard record (io/terrain_surface.h), for scenes with
+  // water and a bed above the floor somewhere.
+  void write_terrain() const {
+    if (!hazard_.active()) return;
+    const auto& bed = hazard_.bed();
+    if (std::none_of(bed.begin(), bed.end(), [](double b) { return b > 0; })) return;
+    std::vector<std::array<double, 3>> points;
+    for (size_t c = 0; c < hazard_.columns(); ++c)
+      points.push_back(dim == 2 ? std::array<double, 3>{hazard_.centre(c, 0), bed[c], 0.0}
+                                : std::array<double, 3>{hazard_.centre(c, 0), hazard_.centre(c, 1), bed[c]});
+    write_terrain_surface(files_.path("terrain.vtp").string(), points, hazard_.count(0), dim == 2 ? 1 : hazard_.count(1), bed);
+  }
+
+  // stations.nc from probes.csv, with the bed under every station (io/station_file.h).
+  void write_stations() const {
+    const std::vector<Station> stations = probes_.stations();
+    std::vector<double> bed;
+    for (const Station& s : stations) bed.push_back(bed_height<dim>(sim_.boundaries, sim_.domain_size, s.position));
+    write_station_file(files_.path("stations.nc").string(), files_.path("probes.csv").string(), stations, bed, scene_);
   }
 
   // A completed run that stops before the end time: after the first iceberg (output.icebergs.stop_after_first)
@@ -191,6 +229,7 @@ class TimeLoop {
   IcebergTracker<dim> icebergs_;
   HazardMap<dim> hazard_;
   RunFiles<dim> files_;
+  Snapshots<dim> snapshots_;
   OutputSchedule frames_, samples_;
   EnergyTotals e0_;
   RunTimes times_;

@@ -66,6 +66,11 @@ void write_summary(const std::string& out_dir, const Simulation<dim>& sim, const
     const GeoreferenceSpec& g = scene.georeference;
     s["georeference"] = {{"easting", g.easting}, {"northing", g.northing}};
     if (dim == 2) s["georeference"]["azimuth"] = g.azimuth;
+    s["georeference"]["time_origin"] = g.time_origin;
+    if (g.crs)
+      s["georeference"]["crs"] = {{"input", g.crs->input}, {"name", g.crs->name},
+                                  {"epsg", g.crs->epsg ? nlohmann::json(g.crs->epsg) : nlohmann::json(nullptr)},
+                                  {"wkt", g.crs->wkt}};
   }
   s["status"] = result.status;
   s["reason"] = result.reason;

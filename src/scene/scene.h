@@ -7,12 +7,14 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "geo/crs.h"
 #include "material/material.h"
 #include "shape/crevasse_field.h"
 #include "shape/shape.h"
@@ -98,6 +100,16 @@ struct ProbeSpec {
   std::string path;       // its path in the scene ("probes.list[0]")
 };
 
+// Gridded snapshots of the depth-averaged water (key "output.snapshots"; run/snapshots.h): eta, d, hu (hv) on the
+// points start + i spacing (i < count, per horizontal axis) at the given times, each a probe sample time.
+struct SnapshotSpec {
+  std::vector<double> times;            // [s], increasing
+  std::vector<double> start;            // dim - 1 coordinates [m]
+  double spacing = 0;                   // [m]
+  std::vector<int> count;               // dim - 1 point counts
+  std::optional<double> still_level;    // [m]; default: measured per point at t = 0
+};
+
 struct OutputSpec {
   bool frames = true;          // write particles_NNNN.vtu and particles.pvd
   bool compress = true;        // zlib-compressed frame data (io/vtu_writer.h); false: raw
@@ -109,15 +121,29 @@ struct OutputSpec {
   double damage_threshold = 0.5;  // a particle / cell with damage at or above this is broken
   int min_iceberg_cells = 4;      // bodies with fewer particles than this many cells' worth are debris
   double stop_after_first = -1;   // end the run this long [s] after the first iceberg separates; < 0 = never
+  std::optional<SnapshotSpec> snapshots;
 };
 
 // Where the domain lies on a map (key "georeference"): the easting and northing [m] of the domain's origin and,
-// in 2D, the azimuth of the +x axis (the transect), degrees clockwise from north. Recorded in summary.json and
-// used as the lower-left corner of the 3D hazard rasters (hazard/hazard_report.h).
+// in 2D, the azimuth of the +x axis (the transect), degrees clockwise from north; the map's coordinate reference
+// system (geo/crs.h), if given; the date and time of t = 0 (the time origin of the netCDF outputs). Recorded in
+// summary.json and used as the lower-left corner of the 3D hazard rasters (hazard/hazard_report.h).
 struct GeoreferenceSpec {
   bool given = false;
   double easting = 0, northing = 0;
   double azimuth = 90;  // 2D only; default +x east
+  std::optional<Crs> crs;
+  std::string time_origin = "1970-01-01 00:00:00";  // UDUNITS form "YYYY-MM-DD hh:mm:ss", UTC
+
+  // The map coordinates (easting, northing) [m] of a point of `horizontal` domain coordinates (dim - 1 of them):
+  // 2D along the transect's azimuth, 3D +x east and +y north.
+  std::array<double, 2> map_point(const std::vector<double>& horizontal) const {
+    if (horizontal.size() == 1) {
+      const double az = azimuth * 3.14159265358979323846 / 180;
+      return {easting + horizontal[0] * std::sin(az), northing + horizontal[0] * std::cos(az)};
+    }
+    return {easting + horizontal[0], northing + horizontal[1]};
+  }
 };
 
 // Hazard products of scenes with a fluid (key "hazard"; hazard/hazard_map.h): sampled every step (interval 0)

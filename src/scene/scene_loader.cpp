@@ -306,7 +306,8 @@ class Loader {
   }
 
   void output(const Node& o) {
-    r_.object(o, {"frames", "compress", "positions", "checkpoint_every", "icebergs"});
+    r_.object(o, {"frames", "compress", "positions", "checkpoint_every", "icebergs", "snapshots"});
+    if (o.has("snapshots")) snapshots(o["snapshots"]);
     s_.output.frames = r_.boolean(o, "frames", true);
     s_.output.compress = r_.boolean(o, "compress", true);
     s_.output.float32_positions = o.has("positions") && r_.string(o["positions"], {"float64", "float32"}) == "float32";
@@ -320,14 +321,87 @@ class Loader {
     s_.output.stop_after_first = r_.number(ib, "stop_after_first", ge(0), -1.0);
   }
 
-  // "georeference": {"easting": m, "northing": m, "azimuth": degrees in [0, 360), 2D only}.
+  // "output.snapshots": {"times": [s, ...] (probe sample times, increasing, at most 10^4; those after time.end are
+  // not reached), "start": [m] (dim - 1),
+  // "spacing": m > 0, "count": [n] (dim - 1, each in [1, 10^5]), "still_level": m}: the points inside the domain,
+  // at most 10^8 values per quantity over all times.
+  void snapshots(const Node& n) {
+    r_.object(n, {"times", "start", "spacing", "count", "still_level"});
+    if (std::none_of(s_.materials.begin(), s_.materials.end(), [](const Material& m) { return m.traits().fluid; }))
+      r_.fail(n.path, "expected a scene with a fluid material (snapshots measure the water)");
+    SnapshotSpec spec;
+    Node times = r_.required(n, "times");
+    const double interval = s_.output.probe_interval, end = s_.time.end;
+    const size_t ntimes = r_.array(times, 1, "a non-empty array of times [s]");
+    if (ntimes > 10000) r_.expected(times, "at most 10000 times");
+    for (size_t i = 0; i < ntimes; ++i) {
+      const double t = r_.number(times[i], ge(0));
+      const double k = std::round(t / interval);
+      if (std::abs(t - k * interval) > 1e-9 * interval && std::abs(t - end) > 1e-9 * interval)
+        r_.expected(times[i], "a probe sample time (a multiple of the probe interval " + format_number(interval) +
+                                  " s, or time.end): snapshots are taken at probe samples, so they change no time step");
+      if (!spec.times.empty() && !(t > spec.times.back())) r_.expected(times[i], "a time after the previous one");
+      spec.times.push_back(t);
+    }
+    spec.start = r_.numbers(r_.required(n, "start"), dim_ - 1);
+    spec.spacing = r_.number(r_.required(n, "spacing"), gt(0));
+    Node count = r_.required(n, "count");
+    const std::vector<double> c = r_.numbers(count, dim_ - 1, {1, 1e5});
+    double points = 1;
+    std::vector<double> last(dim_ - 1);
+    for (int a = 0; a < dim_ - 1; ++a) {
+      if (c[a] != std::floor(c[a])) r_.expected(count, "whole numbers of points in [1, 100000]");
+      spec.count.push_back(static_cast<int>(c[a]));
+      points *= c[a];
+      last[a] = spec.start[a] + (c[a] - 1) * spec.spacing;
+    }
+    r_.inside(n["start"], spec.start, last, "a grid of points (start + (count - 1) spacing)");
+    if (points * double(spec.times.size()) > 1e8)
+      r_.expected(count, "at most 10^8 values per quantity (points x times), got " + format_number(points) + " points x " +
+                             std::to_string(spec.times.size()) + " times");
+    if (n.has("still_level")) spec.still_level = r_.number(n["still_level"], {0, s_.domain.size.back()}, " (inside the domain's height)");
+    s_.output.snapshots = std::move(spec);
+  }
+
+  // "georeference": {"easting": m, "northing": m, "azimuth": degrees in [0, 360) (2D only), "crs": EPSG code or WKT
+  // (geo/crs.h), "time_origin": "YYYY-MM-DDThh:mm:ss[Z]" (UTC)}.
   void georeference(const Node& g) {
-    r_.object(g, dim_ == 2 ? Strings{"easting", "northing", "azimuth"} : Strings{"easting", "northing"});
+    const Strings common = {"easting", "northing", "crs", "time_origin"};
+    Strings keys = common;
+    if (dim_ == 2) keys.push_back("azimuth");
+    r_.object(g, keys);
     GeoreferenceSpec& geo = s_.georeference;
     geo.given = true;
     geo.easting = r_.number(r_.required(g, "easting"));
     geo.northing = r_.number(r_.required(g, "northing"));
     if (dim_ == 2) geo.azimuth = r_.number(g, "azimuth", {0, 360, false, true}, 90.0);
+    if (g.has("crs")) {
+      const std::string text = r_.string(g["crs"]);
+      try {
+        geo.crs = resolve_crs(text);
+      } catch (const std::invalid_argument& e) {
+        r_.fail(g.child("crs"), std::string(e.what()) + ", got \"" + (text.size() > 60 ? text.substr(0, 60) + "..." : text) + "\"");
+      }
+    }
+    if (g.has("time_origin")) geo.time_origin = time_origin(g["time_origin"]);
+  }
+
+  // A date and time "YYYY-MM-DDThh:mm:ss" (a trailing Z, or a space for the T, accepted), in UDUNITS form.
+  std::string time_origin(const Node& n) const {
+    std::string t = r_.string(n);
+    if (t.size() == 20 && t.back() == 'Z') t.pop_back();
+    const std::string form = "dddd-dd-ddTdd:dd:dd";
+    bool ok = t.size() == form.size();
+    for (size_t i = 0; ok && i < t.size(); ++i)
+      ok = form[i] == 'd' ? std::isdigit(static_cast<unsigned char>(t[i])) != 0 : form[i] == 'T' ? t[i] == 'T' || t[i] == ' ' : t[i] == form[i];
+    if (ok) {
+      const int month = std::stoi(t.substr(5, 2)), day = std::stoi(t.substr(8, 2)), hour = std::stoi(t.substr(11, 2));
+      const int minute = std::stoi(t.substr(14, 2)), second = std::stoi(t.substr(17, 2));
+      ok = month >= 1 && month <= 12 && day >= 1 && day <= 31 && hour < 24 && minute < 60 && second < 60;
+    }
+    if (!ok) r_.expected(n, "a date and time \"YYYY-MM-DDThh:mm:ssZ\" (UTC)");
+    t[10] = ' ';
+    return t;
   }
 
   // "hazard": {"enabled": bool, "arrival_threshold": m > 0 (default: per column, hazard/hazard_map.h), "interval":

@@ -1,5 +1,5 @@
 // shape.h - the shape registry: the regions that bodies are filled with and holes cut from (one file per
-// shape: shape/box.h, shape/ball.h, shape/polygon.h, shape/prism.h). A Shape answers point containment and its
+// shape: shape/box.h, shape/ball.h, shape/polygon.h, shape/prism.h, shape/heightfield.h). A Shape answers point containment and its
 // axis-aligned bounding box; the loader reads it (parse_shape), checks it lies inside the domain, and can build
 // no shape of an unregistered type. Adding a shape: its file and one entry in the variant below.
 #pragma once
@@ -10,13 +10,14 @@
 #include "scene/scene_reader.h"
 #include "shape/ball.h"
 #include "shape/box.h"
+#include "shape/heightfield.h"
 #include "shape/polygon.h"
 #include "shape/prism.h"
 
 namespace cdmpm {
 
 // The registry.
-using ShapeModel = std::variant<BoxShape, BallShape, PolygonShape, PrismShape>;
+using ShapeModel = std::variant<BoxShape, BallShape, PolygonShape, PrismShape, HeightfieldShape>;
 
 class Shape {
  public:

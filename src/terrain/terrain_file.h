@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "scene/scene_reader.h"
-#include "scene/scene_loader.h"
 
 namespace cdmpm {
 

@@ -9,8 +9,8 @@ failed). Tests: bad specs refused (exit 2, one line naming the spec and the key,
 list a pure function of the spec; a member rerun alone gives its bits; pool 1 and pool 2 give the same products;
 SIGKILL mid-way then rerun: finished members not rerun, the same products; calibration against one member's own
 outputs; the Slurm array script run as Slurm runs it (and through a real Slurm when `sinfo` answers); the 3D
-percentile and exceedance rasters against a direct computation, with the members' georeference (and GDAL's
-reading of it when gdalinfo is installed); Ctrl-C (SIGINT) stops the pool with checkpoints and exit 130.
+percentile and exceedance rasters against a direct computation, with the members' georeference and CRS (and
+GDAL's reading of them when gdalinfo is installed); Ctrl-C (SIGINT) stops the pool with checkpoints and exit 130.
 """
 import argparse
 import filecmp
@@ -30,6 +30,9 @@ TOOL = os.path.join(ROOT, "tools", "ensemble")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from plot_style import read_asc, read_csv  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from harness import TESTS, Failure, check, test  # noqa: E402
+
 import numpy as np  # noqa: E402
 
 CALVING = os.path.join(ROOT, "scenes", "calving_front_2d.json")
@@ -42,21 +45,6 @@ PRODUCTS = ["members.csv", "gauges_bands.csv", "hazard_bands.csv", "plots/gauges
 MEMBER_FILES = ["probes.csv", "waves.csv", "hazard.csv", "icebergs.csv"]
 
 ARGS = None
-TESTS = []
-
-
-def test(fn):
-    TESTS.append(fn)
-    return fn
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, what):
-    if not cond:
-        raise Failure(what)
 
 
 def work(name):
@@ -498,7 +486,7 @@ def rasters_3d_percentiles_and_georeference():
     d = work("rasters")
     spec = {"scene": os.path.join(ROOT, "scenes", "dam_break_3d.json"),
             "set": ["domain.dx=0.0142875", "output.frames=false",
-                    'georeference={"easting":512345.5,"northing":7712345.25}'],
+                    'georeference={"easting":512345.5,"northing":7712345.25,"crs":"EPSG:32624"}'],
             "members": 5, "seed": 3, "vary": {"materials.water.bulk_modulus": {"range": [2e5, 8e5], "scale": "log"},
                                               "time.end": {"range": [0.04, 0.2]}},
             "thresholds": [0.005, 0.02]}
@@ -547,6 +535,9 @@ def rasters_3d_percentiles_and_georeference():
               f"GDAL reads {a['geoTransform']} {a['size']}, the member's {b['geoTransform']} {b['size']}")
         check(a["geoTransform"][0] == 512345.5 and a["geoTransform"][1] == 0.0142875,
               f"GDAL's origin and cell size {a['geoTransform']}, expected the scene's easting 512345.5 and dx")
+        # The members' CRS beside the raster (their .prj), as GDAL reads it.
+        check("UTM zone 24N" in a.get("coordinateSystem", {}).get("wkt", ""),
+              f"GDAL reads no UTM zone 24N CRS for max_elevation_p50.asc: {a.get('coordinateSystem')}")
     else:
         print("  (gdalinfo not installed: the GDAL reading is not tested)")
 
