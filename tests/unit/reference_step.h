@@ -39,6 +39,7 @@ struct RefMaterial {
   NeoHookeanSplit elastic;        // ice: elasticity
   CohesiveCamClay plastic;        // ice: plasticity (if `plasticity`)
   bool plasticity = true;
+  bool plane_strain = false;      // 2D ice: the 3x3 state diag(F, Fz) (material/ice.h)
 };
 
 // Quadratic B-spline N(r), r in cells.
@@ -73,7 +74,17 @@ class DenseStep {
     for (size_t q = 0; q < p.size(); ++q) {
       const RefMaterial& mat = materials_[p.material[q]];
       const Real V0 = p.mass[q] / mat.rho0;
-      const Mat<dim> tau = mat.ice ? mat.elastic.kirchhoff<dim>(p.F[q]) : mat.water.kirchhoff<dim>(p.J[q], p.C[q]);
+      Mat<dim> tau;
+      if (!mat.ice) {
+        tau = mat.water.kirchhoff<dim>(p.J[q], p.C[q]);
+      } else if (mat.plane_strain) {  // plane strain: the in-plane block of the 3x3 state's stress
+        Mat<3> F3 = Mat<3>::Zero();
+        F3.template topLeftCorner<dim, dim>() = p.F[q];
+        F3(2, 2) = p.out_of_plane(q);
+        tau = mat.elastic.kirchhoff<3>(F3).template topLeftCorner<dim, dim>();
+      } else {
+        tau = mat.elastic.kirchhoff<dim>(p.F[q]);
+      }
       const Mat<dim> affine = p.mass[q] * p.C[q] - dt * V0 * Dinv * tau;
       for_each_node(p.x[q], [&](size_t k, Real w, const Vec<dim>& xi) {
         m[k] += w * p.mass[q];
@@ -104,9 +115,13 @@ class DenseStep {
       const RefMaterial& mat = materials_[p.material[q]];
       if (mat.ice) {
         Mat<dim> F = (Mat<dim>::Identity() + dt * p.C[q]) * p.F[q];
-        if (mat.plasticity)
-          mat.plastic.return_mapping<dim>(F, p.alpha[q], mat.plastic.p0_of_alpha(p.alpha[q], mat.elastic.kappa),
-                                          mat.elastic);
+        const Real p0 = mat.plastic.p0_of_alpha(p.alpha[q], mat.elastic.kappa);
+        if constexpr (dim == 2) {
+          if (mat.plasticity && mat.plane_strain) mat.plastic.return_mapping_plane_strain(F, p.Fz[q], p.alpha[q], p0, mat.elastic);
+          else if (mat.plasticity) mat.plastic.return_mapping<dim>(F, p.alpha[q], p0, mat.elastic);
+        } else if (mat.plasticity) {
+          mat.plastic.return_mapping<dim>(F, p.alpha[q], p0, mat.elastic);
+        }
         p.F[q] = F;
       }
       p.x[q] += dt * p.v[q];

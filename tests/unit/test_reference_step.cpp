@@ -108,6 +108,7 @@ std::vector<RefMaterial> reference_materials(const Scene& s) {
     if (const Ice* ice = std::get_if<Ice>(&mat.model)) {
       m.ice = true;
       m.elastic = ice->elastic;
+      m.plane_strain = ice->plane_strain;
       m.plastic = ice->plastic;
       m.plasticity = ice->plasticity;
     }
