@@ -302,6 +302,11 @@ class BodySeeder {
         if (std::abs(gap) <= 0.5 * h_) share = 1 - gap / h_;
       }
       const Real V0 = cell_volume_ * static_cast<Real>(share) / st.J;
+      // A rigid body's density is its mass over the volume it fills: rho_b h^dim per particle. Its J (the Tait state
+      // of the column pressure down from its level, for the penalty pressure that keeps the water out of it,
+      // material/rigid.h) does not make it heavier: with rho_b V0 = rho_b h^dim / J a block under 1 m of the scenes' water (K = 1e6 Pa) weighs 1 %
+      // more than rho_b V, a tenth of the net buoyancy of a block of density 920 (docs/validation.md).
+      const Real mass = mat_.traits().rigid ? rho0 * cell_volume_ * static_cast<Real>(share) : rho0 * V0;
       // v(x) = velocity + G (x - c), c the centre of the shape's bounding box.
       Vec<dim> vp = v0_ + G_ * (xp - centre_);
       if (body_.solitary) {  // sim/solitary_wave.h
@@ -309,8 +314,8 @@ class BodySeeder {
         vp[up] += static_cast<Real>(body_.solitary->w(x[0], x[up], g));
       }
       const MaterialId id = static_cast<MaterialId>(material_index_);
-      if (solid) particles.add_solid(xp, vp, rho0 * V0, st.J, id, G_, st.F, st.alpha, st.Fz);
-      else particles.add_fluid(xp, vp, rho0 * V0, st.J, id, G_);
+      if (solid) particles.add_solid(xp, vp, mass, st.J, id, G_, st.F, st.alpha, st.Fz);
+      else particles.add_fluid(xp, vp, mass, st.J, id, G_);
       if (seeding) particles.id[solid ? particles.solid_count() - 1 : particles.size() - 1] = index;
     }
   }

@@ -3,10 +3,12 @@
 // half-plane does the same (bounded by `within`, only inside its box), and a moving box obstacle (a grip) keeps
 // the material seeded inside it. A 3D prism (shape/prism.h) is seeded at exactly the lattice points inside its
 // x-z section and its y range. Material seeded within a cell of a wall face that lies between two grid planes is
-// refused, naming the face, the body and the sizes on the grid on either side.
+// refused, naming the face, the body and the sizes on the grid on either side. A rigid body seeded under water
+// (its particles carry the water's column pressure) weighs its density times its volume.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "scene/scene_loader.h"
@@ -146,6 +148,35 @@ TEST(Seeding, PrismIsItsSectionExtrudedAlongY) {
   const std::string zero = refusal(j);
   EXPECT_NE(zero.find("bodies[0].shape.vertices"), std::string::npos) << zero;
   EXPECT_NE(zero.find("nonzero area"), std::string::npos) << zero;
+}
+
+// A rigid block of density rho_b under deep, soft water (K = 1e5 Pa, its top 3 m under the surface) is seeded with the water's pressure in its particles (their J < 1), and
+// with its own mass rho_b V: its particles fill V = 1 m x 1 m on the lattice, so their masses sum to rho_b V to
+// round-off, with and without a surface level above it (without one, the column is its own).
+TEST(Seeding, RigidBodyUnderWaterWeighsItsDensityTimesItsVolume) {
+  nlohmann::json j = pool({{"type", "walls"}});
+  j["materials"]["water"]["bulk_modulus"] = 1e5;
+  const double rho_b = 920, volume = 1.0;
+  j["materials"]["block"] = {{"type", "rigid"}, {"density", rho_b}, {"bulk_modulus", 1e5}};
+  j["bodies"].push_back({{"material", "block"}, {"particles_per_cell", 4}, {"surface_level", 6.0},
+                         {"shape", {{"type", "box"}, {"min", {4.5, 2.0}}, {"max", {5.5, 3.0}}}}});
+  for (const bool level : {true, false}) {
+    if (!level) j["bodies"][1].erase("surface_level");
+    const Scene scene = scene_from_json(j, "rigid.json");
+    const auto block = static_cast<MaterialId>(scene.material_index("block"));
+    const Simulation<2> sim(scene);
+    double mass = 0, J_min = 1;
+    size_t n = 0;
+    for (size_t q = 0; q < sim.particles.size(); ++q)
+      if (sim.particles.material[q] == block) {
+        mass += sim.particles.mass[q];
+        J_min = std::min(J_min, static_cast<double>(sim.particles.J[q]));
+        ++n;
+      }
+    ASSERT_EQ(n, 16u);  // 4 x 4 particles of spacing 0.25 m
+    EXPECT_LT(J_min, 0.97);  // compressed (Tait, gamma = 7): the body does carry a column pressure
+    EXPECT_NEAR(mass, rho_b * volume, 64 * std::numeric_limits<Real>::epsilon() * rho_b * volume) << "surface level " << level;
+  }
 }
 
 }  // namespace
