@@ -4,8 +4,9 @@
 // crosses output.icebergs.damage_threshold in a step: below it before the constitutive update, at or above it
 // after. Each event holds the step, the time at the end of that step, the particle id and position, and the
 // Cauchy stress state after the update (sigma = tau / det F_e):
-//   p = -tr(sigma) / d,  q = sqrt(3/2) |dev sigma|  (the invariants of material/cohesive_cam_clay.h, 2D convention
-//   included),  sigma_1 = the largest principal stress (positive in tension).
+//   p = -tr(sigma) / d,  q = sqrt(3/2) |dev sigma|  (in 3D the invariants of material/cohesive_cam_clay.h; in 2D those
+//   of the in-plane 2x2 stress, a record of the plane's stress: the yield surface of plane-strain ice sees the 3x3
+//   state, sigma_zz included),  sigma_1 = the largest principal stress (positive in tension).
 // MODE. The Cam Clay return mapping softens only on the tensile side of its ellipse (p below the centre
 // p_c = (1 - beta) p0 / 2, or at the tensile tip), so "which side softened it" cannot tell tension from shear:
 // a simple shear (p = 0 < p_c) softens on that side too. The rule is the stress triaxiality eta = -p / q
