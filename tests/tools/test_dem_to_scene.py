@@ -9,12 +9,13 @@ the shipped synthetic pair (scenes/data/synthetic_glacier, tools/synthetic_dems.
     rasters that GDAL places at the region's corner in EPSG:3413 and a snapshot that xarray opens;
   - bad DEM inputs are refused with one line naming the input, exit status 2, nothing written: DEMs in different
     CRS, DEMs that do not overlap, NODATA inside the region, a front line outside the ice;
-  - the heightfield shape's loader checks: a top nowhere above the bottom, a missing file, an unknown key (exit 2,
-    the key named).
+  - the heightfield shape's loader checks: a top nowhere above the bottom, a missing file, an unknown key, a footprint
+    of two vertices (exit 2, the key named); a footprint that splits the glacier seeds each part of its ice.
 Each test prints PASS or FAIL with the reason; the last line is "N passed, M failed".
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -152,7 +153,9 @@ def heightfield_shape_input_errors_name_the_key():
     scene = json.load(open(os.path.join(out, "glacier_3d.json")))
     cases = [("bodies[0].shape.top", lambda s: s["bodies"][0]["shape"].update(top="bed.asc"), "above the bottom"),
              ("bodies[0].shape.bottom", lambda s: s["bodies"][0]["shape"].update(bottom="no_such.asc"), "no such file"),
-             ("bodies[0].shape.depth", lambda s: s["bodies"][0]["shape"].update(depth=1), "unknown key")]
+             ("bodies[0].shape.depth", lambda s: s["bodies"][0]["shape"].update(depth=1), "unknown key"),
+             ("bodies[0].shape.footprint.vertices",
+              lambda s: s["bodies"][0]["shape"].update(footprint={"vertices": [[0, 0], [10, 0]]}), "at least 3")]
     for key, change, words in cases:
         s = json.loads(json.dumps(scene))
         change(s)
@@ -160,6 +163,31 @@ def heightfield_shape_input_errors_name_the_key():
         json.dump(s, open(path, "w"))
         r = cdmpm("check", path, expect=2)
         check(key in r.stderr and words in r.stderr, f"{key}: {r.stderr.strip()}")
+
+
+@test
+def heightfield_footprint_keeps_the_ice_inside_it():
+    # A footprint splits the glacier at x = 300 m (between lattice points): the ice seeded on either side adds up to
+    # the whole glacier's, each part non-empty. The water body is seeded alone to count it out.
+    out = made()
+    path = os.path.join(out, "glacier_3d.json")
+    scene = json.load(open(path))
+    check([b["material"] for b in scene["bodies"]] == ["ice", "water"], "the tutorial scene's bodies: ice, then water")
+    x1, y1 = scene["domain"]["size"][:2]
+
+    def seeded(*sets):
+        r = cdmpm("check", path, *[a for s in sets for a in ("--set", s)])
+        m = re.search(r"seeded: (\d+) particles", r.stdout)
+        check(m is not None, f"no particle count in {r.stdout!r}")
+        return int(m.group(1)) if m else 0
+
+    def footprint(xa, xb):
+        return "bodies.0.shape.footprint=" + json.dumps({"vertices": [[xa, 0], [xb, 0], [xb, y1], [xa, y1]]})
+
+    water = seeded("bodies=" + json.dumps(scene["bodies"][1:]))
+    whole, left, right = (seeded(*f) - water for f in ([], [footprint(0, 300)], [footprint(300, x1)]))
+    check(left > 0 and right > 0 and left + right == whole, f"ice seeded with the footprints {left} + {right}, "
+          f"without {whole}")
 
 
 def use_args(args):

@@ -163,6 +163,9 @@ TEST(AbsorbingBoundary, InputErrorsNameTheKey) {
   EXPECT_TRUE(has(m, "boundaries[1].strength")) << m;
   m = with("spill_width", 4.0);
   EXPECT_TRUE(has(m, "boundaries[1].spill_width")) << m;
+  m = with("spill_level", 0.5);  // the spillway's lower edge below the still level
+  EXPECT_TRUE(has(m, "boundaries[1].spill_level") && has(m, "[1, 1.5]")) << m;
+  EXPECT_EQ(with("spill_level", 1.2), "accepted");
   m = with("condition", "slip");
   EXPECT_TRUE(has(m, "boundaries[1].condition") && has(m, "unknown key")) << m;
   m = refused(ok, {"x-", "y-"});  // the face the layer lies in front of is open

@@ -2,6 +2,7 @@
 // expected message, a valid scene round-trips with defaults filled, and --set overrides behave.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -195,6 +196,41 @@ TEST(SceneLoader, ThreeDimensionalScene) {
   j["boundaries"][1]["heights"][1] = {0, 0.1, 0.3};
   j["bodies"][0]["shape"] = {{"type", "polygon"}, {"vertices", {{0, 0}, {1, 0}, {0, 1}}}};  // 2D only
   EXPECT_NE(error_of([&] { scene_from_json(j, "s3.json"); }).find("bodies[0].shape.type"), std::string::npos);
+}
+
+// The output switches (frames written raw, positions in single precision) and the hazard record switched off.
+TEST(SceneLoader, OutputAndHazardSwitchesAreRead) {
+  Scene s = scene_from_json(minimal_scene(), "x.json");
+  EXPECT_TRUE(s.output.compress);
+  EXPECT_FALSE(s.output.float32_positions);
+  EXPECT_TRUE(s.hazard.enabled);
+  json j = minimal_scene();
+  j["output"] = {{"compress", false}, {"positions", "float32"}};
+  j["hazard"] = {{"enabled", false}};
+  s = scene_from_json(j, "x.json");
+  EXPECT_FALSE(s.output.compress);
+  EXPECT_TRUE(s.output.float32_positions);
+  EXPECT_FALSE(s.hazard.enabled);
+  j["output"]["positions"] = "float16";
+  EXPECT_NE(error_of([&] { scene_from_json(j, "x.json"); }).find("output.positions: expected one of"), std::string::npos);
+}
+
+// An ice's initial strength given as its hardening variable alpha0 (p0 = kappa (1e-4 + sinh(xi max(-alpha0, 0))),
+// docs/ice.md), and perfect plasticity (no hardening) at that strength.
+TEST(SceneLoader, IceStrengthFromAlpha0AndHardeningOff) {
+  json j = minimal_scene();
+  j["materials"]["ice"] = {{"type", "ice"}, {"density", 917}, {"youngs_modulus", 1e9}, {"M", 1.85}, {"beta", 0.3},
+                           {"xi", 3}, {"alpha0", -0.01}, {"hardening", false}};
+  Scene s = scene_from_json(j, "x.json");
+  const Ice& ice = std::get<Ice>(s.materials[s.material_index("ice")].model);
+  EXPECT_FALSE(ice.plastic.hardening);
+  const double kappa = ice.elastic.kappa;
+  EXPECT_NEAR(ice.p0_initial, kappa * (1e-4 + std::sinh(3 * 0.01)), 1e-5 * kappa);
+  j["materials"]["ice"].erase("hardening");
+  s = scene_from_json(j, "x.json");
+  EXPECT_TRUE(std::get<Ice>(s.materials[s.material_index("ice")].model).plastic.hardening);
+  j["materials"]["ice"]["alpha0"] = 0.5;  // alpha0 <= 0
+  EXPECT_NE(error_of([&] { scene_from_json(j, "x.json"); }).find("materials.ice.alpha0"), std::string::npos);
 }
 
 TEST(SceneLoader, OverridesApplyBeforeValidation) {
