@@ -1,12 +1,12 @@
 """check_vtu_paraview.py - open .vtu frames with ParaView's own reader and print what it sees: the number of
 points, each point array's type, components and range, the field data and the time ParaView reports, and
-whether every array equals what tools/vtu.py reads from the same file, bit for bit. Not part of the tests.
+whether every array equals what tools/cdmpm_tools/frames.py reads from the same file, bit for bit. Not part of the tests.
 
     xvfb-run -a pvpython tools/check_vtu_paraview.py FRAME.vtu...
 
 (Debian packages paraview, python3-paraview, which brings pvpython and the paraview module, and xvfb.)
 
-Exits 1 if ParaView and vtu.py disagree on any frame.
+Exits 1 if ParaView and cdmpm_tools.frames disagree on any frame.
 """
 import os
 import sys
@@ -17,7 +17,7 @@ from paraview.simple import XMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import read_field_data, read_vtu  # noqa: E402
+from cdmpm_tools.frames import read_field_data, read_vtu  # noqa: E402
 
 
 def field_data(grid):
@@ -47,7 +47,7 @@ def check(path):
     pv_points = vtk_to_numpy(grid.GetPoints().GetData())
     ok = same(pv_points, points)
     print(f"  Points {pv_points.dtype} x3 range x [{pv_points[:, 0].min():.6g}, {pv_points[:, 0].max():.6g}]"
-          f" y [{pv_points[:, 1].min():.6g}, {pv_points[:, 1].max():.6g}] same as vtu.py: {ok}")
+          f" y [{pv_points[:, 1].min():.6g}, {pv_points[:, 1].max():.6g}] same as cdmpm_tools.frames: {ok}")
     pd = grid.GetPointData()
     for i in range(pd.GetNumberOfArrays()):
         arr = pd.GetArray(i)
@@ -55,14 +55,14 @@ def check(path):
         eq = same(values, fields[name])
         ok &= eq
         print(f"  {name:10s} {str(values.dtype):8s} x{arr.GetNumberOfComponents()} "
-              f"range [{values.min():.6g}, {values.max():.6g}] same as vtu.py: {eq}")
+              f"range [{values.min():.6g}, {values.max():.6g}] same as cdmpm_tools.frames: {eq}")
     pv_fd, our_fd = field_data(grid), read_field_data(path)
     our_fd = {k: (v if isinstance(v, list) else v.tolist()) for k, v in our_fd.items()}
-    print(f"  field data {pv_fd} same as vtu.py: {pv_fd == our_fd}")
+    print(f"  field data {pv_fd} same as cdmpm_tools.frames: {pv_fd == our_fd}")
     return ok and pv_fd == our_fd and len(fields) == pd.GetNumberOfArrays()
 
 
 if __name__ == "__main__":
     results = [check(p) for p in sys.argv[1:]]
-    print("ParaView and vtu.py agree" if all(results) else "ParaView and vtu.py DISAGREE")
+    print("ParaView and cdmpm_tools.frames agree" if all(results) else "ParaView and cdmpm_tools.frames DISAGREE")
     sys.exit(0 if all(results) else 1)

@@ -12,7 +12,7 @@ present in only one of them is a difference. Per run folder it checks:
   - stations.nc, snapshots.nc, hazard.nc, when both runs wrote them: every variable's values bit for bit and its
     attributes, the global attributes but "source" (the program's version) (python3-netcdf4);
   - particles.pvd: the same frame list (file names and the bits of every time);
-  - every frame particles_NNNN.vtu, read through tools/vtu.py (so any encoding vtu.py reads): the particle count,
+  - every frame particles_NNNN.vtu, read through tools/cdmpm_tools/frames.py (so any encoding it reads): the particle count,
     the points, and every point-data array present in BOTH frames: the same type, shape and bits (two NaNs are
     equal whatever their payload; +0.0 and -0.0 are not). Arrays present in only one frame are listed (a new
     build may add fields, e.g. a particle id) but are not a difference;
@@ -32,7 +32,8 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import read_pvd, read_vtu  # noqa: E402
+from cdmpm_tools.frames import read_pvd, read_vtu  # noqa: E402
+from cdmpm_tools.io import read_summary  # noqa: E402
 
 TEXT_FILES = ("probes.csv", "icebergs.csv", "waves.csv")
 # The hazard products (docs/scenes.md#hazard), the realised crevasses (docs/scenes.md#crevasses) and the crack-start
@@ -234,7 +235,7 @@ def compare_summary(a, b, report, stats):
             report(f"  summary.json: only in {'REF' if os.path.exists(pa) else 'NEW'}")
             return False
         return True
-    sa, sb = json.load(open(pa)), json.load(open(pb))
+    sa, sb = read_summary(a), read_summary(b)
     stats["steps"] = sa.get("steps")
     stats["sim_time"] = sa.get("sim_time")
     bad = []

@@ -32,6 +32,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.io import write_asc  # noqa: E402
+
 TOOL = "dem_to_scene.py"
 
 
@@ -136,17 +139,6 @@ def side_of_line(np, pts, X, Y):
     return side
 
 
-def write_asc(np, path, a, x0, y0, dx, wkt_esri):
-    """An ESRI ASCII grid (rows north first) and its .prj."""
-    with open(path, "w") as f:
-        f.write(f"ncols {a.shape[1]}\nnrows {a.shape[0]}\nxllcorner {x0!r}\nyllcorner {y0!r}\ncellsize {dx!r}\n"
-                "NODATA_value -9999\n")
-        for row in a:
-            f.write(" ".join(f"{v:.6g}" for v in row) + "\n")
-    with open(os.path.splitext(path)[0] + ".prj", "w") as f:
-        f.write(wkt_esri + "\n")
-
-
 MATERIALS = {
     "ice": {"type": "ice", "density": 917, "youngs_modulus": 1.0e9, "poissons_ratio": 0.3, "M": 1.85, "beta": 0.1,
             "xi": 5, "tensile_strength": 1.0e6},
@@ -235,8 +227,8 @@ def main():
     esri = bed_srs.Clone()
     esri.MorphToESRI()
     os.makedirs(args.out, exist_ok=True)
-    write_asc(np, os.path.join(args.out, "bed.asc"), bed, grid[0], grid[1], dx, esri.ExportToWkt())
-    write_asc(np, os.path.join(args.out, "ice_top.asc"), top, grid[0], grid[1], dx, esri.ExportToWkt())
+    write_asc(os.path.join(args.out, "bed.asc"), bed, grid[0], grid[1], dx, prj=esri.ExportToWkt())
+    write_asc(os.path.join(args.out, "ice_top.asc"), top, grid[0], grid[1], dx, prj=esri.ExportToWkt())
     auth = bed_srs.GetAuthorityCode(None) if bed_srs.GetAuthorityName(None) == "EPSG" else None
     if auth is None:  # an ESRI .prj names no authority: the EPSG system it is, if GDAL finds one for certain
         matches = [m for m, confidence in bed_srs.FindMatches() if confidence == 100]

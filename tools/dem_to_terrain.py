@@ -17,6 +17,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.io import write_asc  # noqa: E402
+
 
 def import_gdal():
     try:
@@ -66,17 +69,13 @@ def write_grid(gdal, ds, out, band, bounds, cellsize):
     a, missing = heights_and_nodata(warped, 1)
     wgt = warped.GetGeoTransform()
     nrows, ncols = a.shape
-    with open(out, "w") as f:
-        f.write(f"ncols {ncols}\nnrows {nrows}\nxllcorner {wgt[0]!r}\nyllcorner {wgt[3] + nrows * wgt[5]!r}\n"
-                f"cellsize {size!r}\nNODATA_value -9999\n")
-        for r in range(nrows):  # north-up: the first row is the northernmost
-            f.write(" ".join("-9999" if missing[r, c] else f"{a[r, c]:.3f}" for c in range(ncols)) + "\n")
-    srs = ds.GetSpatialRef()
+    srs, prj = ds.GetSpatialRef(), None
     if srs is not None:  # the DEM's CRS beside the grid (ESRI WKT, as GDAL and QGIS read a .prj)
         esri = srs.Clone()
         esri.MorphToESRI()
-        with open(os.path.splitext(out)[0] + ".prj", "w") as f:
-            f.write(esri.ExportToWkt() + "\n")
+        prj = esri.ExportToWkt()
+    a[missing] = float("nan")  # written as NODATA; rows north-up, the first the northernmost
+    write_asc(out, a, wgt[0], wgt[3] + nrows * wgt[5], size, fmt=".3f", prj=prj)
     print(f"{out}: {ncols} x {nrows} cells of {size} m, {int(missing.sum())} NODATA")
 
 

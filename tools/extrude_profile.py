@@ -10,24 +10,20 @@ Elevation at (easting x, northing y), y across the channel in [0, width]:
 a flat floor `floor` metres wide along the channel's centre line, and banks rising at `side_slope` (rise over run) to
 both sides. Easting runs over the profile's distance range; cell centres (xllcenter, yllcenter) lie on the profile's
 first distance and on y = 0, so the grid covers a domain of the profile's length and the channel's width with
-"file_origin" [first distance, 0, elevation of the domain's bottom]. Python standard library only.
+"file_origin" [first distance, 0, elevation of the domain's bottom].
 """
 import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.io import read_csv  # noqa: E402
 
 
 def read_profile(path):
-    pts = []
-    header = True
-    for line in open(path):
-        s = line.strip()
-        if not s or s.startswith("#"):
-            continue
-        if header:
-            header = False
-            continue
-        d, z = (float(v) for v in s.split(","))
-        pts.append((d, z))
-    return pts
+    """[(distance, elevation), ...] from the profile's first two columns."""
+    distance, elevation = list(read_csv(path).values())[:2]
+    return [(float(d), float(z)) for d, z in zip(distance, elevation)]
 
 
 def interp(pts, x):

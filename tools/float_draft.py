@@ -17,7 +17,8 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail, read_csv  # noqa: E402
+from cdmpm_tools.cli import fail  # noqa: E402
+from cdmpm_tools.io import read_table  # noqa: E402
 
 TOOL = "float_draft"
 
@@ -32,12 +33,7 @@ def main():
     ap.add_argument("--speed", default="speed_y")
     ap.add_argument("--level", default="level")
     args = ap.parse_args()
-    if not os.path.isfile(args.probes):
-        fail(TOOL, f"{args.probes}: no such file")
-    cols = read_csv(args.probes)
-    for c in ("time", args.centre, args.speed, args.level):
-        if c not in cols:
-            fail(TOOL, f"{args.probes}: no column '{c}' (columns: {', '.join(cols)})")
+    cols = read_table(TOOL, args.probes, ("time", args.centre, args.speed, args.level))
     t, y, v, level = cols["time"], cols[args.centre], cols[args.speed], cols[args.level]
     if len(t) == 0:
         fail(TOOL, f"{args.probes}: no rows")

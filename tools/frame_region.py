@@ -5,8 +5,9 @@ one place of a run without ParaView (for example the ice passing a support's edg
 
     /usr/bin/python3 tools/frame_region.py OUT_DIR FRAME --box XMIN YMIN XMAX YMAX [--material N]
                                            [--damage 0.5] [--list]
-FRAME is the frame number (particles_FRAME.vtu). --material keeps one material index (order of the scene's
-"materials"). --list prints every particle (position, stress, J, damage) sorted by height then x.
+FRAME is the frame number (particles_FRAME.vtu, or a distributed run's particles_FRAME.pvtu). --material keeps
+one material index (order of the scene's "materials"). --list prints every particle (position, stress, J, damage)
+sorted by height then x.
 Stresses and pressure in kPa, tension positive; u and w the horizontal and vertical velocity [m/s].
 """
 import argparse
@@ -16,22 +17,21 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import read_vtu  # noqa: E402
+from cdmpm_tools.frames import add_frame_arguments, frame_file, read_frame  # noqa: E402
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out")
-    ap.add_argument("frame", type=int)
+    add_frame_arguments(ap, material=False)
     ap.add_argument("--box", type=float, nargs=4, required=True, metavar=("XMIN", "YMIN", "XMAX", "YMAX"))
     ap.add_argument("--material", type=int)
     ap.add_argument("--damage", type=float, default=0.5, help="broken above this damage (default 0.5)")
     ap.add_argument("--list", action="store_true")
     args = ap.parse_args()
-    path = os.path.join(args.out, f"particles_{args.frame:04d}.vtu")
+    path = frame_file(args.out, args.frame)
     if not os.path.exists(path):
         sys.exit(f"{path}: no such frame")
-    pts, f = read_vtu(path)
+    pts, f = read_frame(path)
     x0, y0, x1, y1 = args.box
     sel = (pts[:, 0] >= x0) & (pts[:, 0] <= x1) & (pts[:, 1] >= y0) & (pts[:, 1] <= y1)
     if args.material is not None:

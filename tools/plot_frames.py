@@ -11,8 +11,12 @@ import argparse
 import os
 import sys
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import WATER, fail, ice_colormap, ice_mask, output_folder, robust_range  # noqa: E402
+from cdmpm_tools.cli import add_output_arguments, fail, output_folder  # noqa: E402
+from cdmpm_tools.frames import read_field_data, read_pvd, read_vtu  # noqa: E402
+from cdmpm_tools.plotting import WATER, ice_colormap, ice_mask, pyplot, robust_range, save_figure  # noqa: E402
 
 TOOL = "plot_frames"
 UNITS = {"pressure": "Pa", "velocity": "m/s", "J": "-", "damage": "-", "alpha": "-", "p0": "Pa", "mass": "kg",
@@ -24,17 +28,9 @@ def main():
     ap.add_argument("run", help="a cdmpm run folder (with particles.pvd)")
     ap.add_argument("--frames", type=int, nargs="*", help="frame indices to draw")
     ap.add_argument("--field", help="colour all particles by this frame field (e.g. pressure, velocity, J)")
-    ap.add_argument("--out", help="folder for frames.png (default: RUN/plots)")
-    ap.add_argument("--force", action="store_true", help="allow a folder with committed files")
+    add_output_arguments(ap, "folder for frames.png (default: RUN/plots)")
     args = ap.parse_args()
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        import numpy as np
-        from vtu import read_field_data, read_pvd, read_vtu
-    except ImportError as e:
-        fail(TOOL, f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
+    plt = pyplot(TOOL)
     if not os.path.isfile(os.path.join(args.run, "particles.pvd")):
         fail(TOOL, f"{args.run}: no particles.pvd (not a cdmpm run folder, or a run without frames)")
     frames = read_pvd(args.run)
@@ -87,9 +83,7 @@ def main():
     if sc is not None:
         label = (f"{args.field} [{UNITS.get(args.field, '?')}]" if args.field else "ice damage [-] (0 intact, 1 broken)")
         fig.colorbar(sc, ax=axes[:, 0], label=label, shrink=0.6)
-    png = os.path.join(folder, f"frames_{args.field}.png" if args.field else "frames.png")
-    fig.savefig(png, dpi=110)
-    print(png)
+    print(save_figure(fig, os.path.join(folder, f"frames_{args.field}.png" if args.field else "frames.png"), dpi=110))
 
 
 if __name__ == "__main__":

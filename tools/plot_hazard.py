@@ -11,12 +11,15 @@ time and the inundation depth in map coordinates (the rasters' georeferenced cor
 output is a one-line error (exit code 2).
 """
 import argparse
-import json
 import os
 import sys
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail as fail_as, output_folder, read_asc, read_csv  # noqa: E402
+from cdmpm_tools.cli import add_output_arguments, fail as fail_as, output_folder  # noqa: E402
+from cdmpm_tools.io import read_asc, read_csv, read_summary  # noqa: E402
+from cdmpm_tools.plotting import pyplot, save_figure  # noqa: E402
 
 TOOL = "plot_hazard"
 
@@ -25,14 +28,7 @@ def fail(msg):
     fail_as(TOOL, msg)
 
 
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-except ImportError as e:
-    fail(f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
+plt = pyplot(TOOL)
 
 
 def plot_2d(run, out):
@@ -57,10 +53,7 @@ def plot_2d(run, out):
     b.set_xlabel("x [m]")
     b.set_ylabel("time [s]")
     b.legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out, "hazard.png")
-    fig.savefig(path, dpi=120)
-    return [path]
+    return [save_figure(fig, os.path.join(out, "hazard.png"), dpi=120)]
 
 
 def plot_3d(run, out):
@@ -74,17 +67,13 @@ def plot_3d(run, out):
         ax.set_xlabel("easting [m]")
         ax.set_ylabel("northing [m]")
         ax.set_title(name)
-    fig.tight_layout()
-    path = os.path.join(out, "hazard_maps.png")
-    fig.savefig(path, dpi=120)
-    return [path]
+    return [save_figure(fig, os.path.join(out, "hazard_maps.png"), dpi=120)]
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run", help="a run's output folder")
-    ap.add_argument("--out", help="folder for the PNG files (default RUN/plots; created if missing)")
-    ap.add_argument("--force", action="store_true", help="allow a folder with committed files")
+    add_output_arguments(ap, "folder for the PNG files (default RUN/plots; created if missing)")
     args = ap.parse_args()
     has_2d = os.path.isfile(os.path.join(args.run, "hazard.csv"))
     has_3d = os.path.isfile(os.path.join(args.run, "max_elevation.asc"))
@@ -95,11 +84,9 @@ def main():
         written = plot_2d(args.run, args.out) if has_2d else plot_3d(args.run, args.out)
     except (OSError, ValueError, KeyError, IndexError) as e:
         fail(f"{args.run}: cannot plot the hazard output: {e}")
-    summary = os.path.join(args.run, "summary.json")
-    if os.path.isfile(summary):
-        with open(summary) as f:
-            hz = json.load(f).get("hazard", {})
-        for s in hz.get("shores", []):
+    summary = read_summary(args.run)
+    if summary is not None:
+        for s in summary.get("hazard", {}).get("shores", []):
             print(f"shore (direction {s['direction']}): run-up {s['runup']} m at x = {s['runup_x']} m, "
                   f"inundation extent x = {s['extent_x']} m")
     for p in written:

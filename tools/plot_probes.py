@@ -9,12 +9,13 @@ The figure goes to FOLDER/probes.png (default: RUN_DIR/plots); a folder holding 
 (--force overrides). Needs numpy and matplotlib (Debian's /usr/bin/python3).
 """
 import argparse
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail, output_folder, probe_units  # noqa: E402
+from cdmpm_tools.cli import add_output_arguments, fail, output_folder  # noqa: E402
+from cdmpm_tools.io import probe_list, read_csv, read_scene  # noqa: E402
+from cdmpm_tools.plotting import probe_units, pyplot, save_figure  # noqa: E402
 
 TOOL = "plot_probes"
 
@@ -28,13 +29,8 @@ SECTION_QUANTITIES = {
 def section_panels(run, names):
     """[(axis label, [(column, line label), ...]), ...] for the section probes of the run's scene.resolved.json
     whose columns are in `names`, one panel per quantity."""
-    try:
-        scene = json.load(open(os.path.join(run, "scene.resolved.json")))
-    except (OSError, ValueError):
-        return []
-    probes = scene.get("probes", {})
     panels = []
-    for p in probes.get("list", []) if isinstance(probes, dict) else []:
+    for p in probe_list(read_scene(run)):
         if p.get("type") != "section":
             continue
         name = p["name"]
@@ -60,27 +56,20 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run", help="a cdmpm run folder (with probes.csv), or a probes.csv")
     p.add_argument("--columns", nargs="+", help="columns to plot (default: all)")
-    p.add_argument("--out", help="folder for probes.png (default: the run folder's plots/)")
-    p.add_argument("--force", action="store_true", help="allow a folder with committed files")
+    add_output_arguments(p, "folder for probes.png (default: the run folder's plots/)")
     args = p.parse_args()
-    try:
-        import numpy as np
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError as e:
-        fail(TOOL, f"needs numpy and matplotlib (Debian's /usr/bin/python3 with python3-matplotlib): {e}")
+    plt = pyplot(TOOL)
     run = args.run if os.path.isdir(args.run) else os.path.dirname(os.path.abspath(args.run))
     csv = os.path.join(args.run, "probes.csv") if os.path.isdir(args.run) else args.run
     if not os.path.isfile(csv):
         fail(TOOL, f"{csv}: no such file (a run without probes writes none)")
-    try:
-        data = np.genfromtxt(csv, delimiter=",", names=True)
-    except ValueError as e:
-        fail(TOOL, f"{csv}: not a probes table: {e}")
-    if data.dtype.names is None or "time" not in data.dtype.names:
+    data = read_csv(csv)
+    if "time" not in data:
         fail(TOOL, f"{csv}: no header with a time column")
-    names = [n for n in data.dtype.names if n != "time"]
+    text = [n for n, v in data.items() if v.dtype.kind not in "fi"]
+    if text:
+        fail(TOOL, f"{csv}: not a probes table: column {text[0]} holds text")
+    names = [n for n in data if n != "time"]
     columns = args.columns or names
     unknown = [c for c in columns if c not in names]
     if unknown:
@@ -93,7 +82,6 @@ def main():
     in_sections = {c for _, lines in sections for c, _ in lines}
     panels = [(units.get(c, c), [(c, None)]) for c in columns if c not in in_sections] + sections
     folder = output_folder(TOOL, args.out or os.path.join(run, "plots"), args.force)
-    data = np.atleast_1d(data)
     fig, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False, figsize=(7, 1.0 + 2.2 * len(panels)))
     for ax, (label, lines) in zip(axes[:, 0], panels):
         for c, line_label in lines:
@@ -104,10 +92,7 @@ def main():
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time [s]")
     axes[0, 0].set_title(csv, fontsize=8)
-    fig.tight_layout()
-    png = os.path.join(folder, "probes.png")
-    fig.savefig(png, dpi=120)
-    print(png)
+    print(save_figure(fig, os.path.join(folder, "probes.png"), dpi=120))
     return 0
 
 

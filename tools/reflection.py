@@ -17,7 +17,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail, read_csv  # noqa: E402
+from cdmpm_tools.cli import fail  # noqa: E402
+from cdmpm_tools.io import read_csv  # noqa: E402
 
 TOOL = "reflection"
 

@@ -15,9 +15,9 @@ import math
 import os
 import sys
 
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import ICE_DAMAGE_COLOURS, fail as fail_as, output_folder  # noqa: E402
+from cdmpm_tools.cli import add_output_arguments, fail as fail_as, output_folder  # noqa: E402
+from cdmpm_tools.plotting import ICE_DAMAGE_COLOURS  # noqa: E402
 
 TOOL = "render_damage_paraview"
 
@@ -30,8 +30,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run", help="a cdmpm run folder (with particles.pvd)")
     ap.add_argument("--time", type=float, help="frame time [s] (default: the last frame)")
-    ap.add_argument("--out", help="output folder (default RUN/plots)")
-    ap.add_argument("--force", action="store_true", help="allow a folder with committed files")
+    add_output_arguments(ap, "output folder (default RUN/plots)")
     ap.add_argument("--size", type=int, nargs=2, default=[1600, 500], metavar=("W", "H"), help="image size [px]")
     args = ap.parse_args()
     pvd = os.path.join(args.run, "particles.pvd")
@@ -74,7 +73,7 @@ def main():
     display.PointSize = max(1.0, min(4.0, 4e5 / max(n, 1) ** 0.5 / 100))
     pv.ColorBy(display, ("POINTS", "damage"))
     lut = pv.GetColorTransferFunction("damage")
-    # The ice colours of tools/plot_style.py, at damage 0, 0.5 and 1.
+    # The ice colours of cdmpm_tools.plotting, at damage 0, 0.5 and 1.
     lut.RGBPoints = [v for d, rgb in zip((0.0, 0.5, 1.0), ICE_DAMAGE_COLOURS) for v in (d, *rgb)]
     lut.ColorSpace = "RGB"
     lut.RescaleTransferFunction(0.0, 1.0)

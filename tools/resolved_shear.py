@@ -21,7 +21,8 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import add_frame_arguments, fail, read_material_frame  # noqa: E402
+from cdmpm_tools.cli import fail  # noqa: E402
+from cdmpm_tools.frames import add_frame_arguments, read_material_frame  # noqa: E402
 from shear_regime import RANGES, laboratory_ranges, shear, uniaxial  # noqa: E402
 
 

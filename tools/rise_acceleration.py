@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail, read_csv  # noqa: E402
+from cdmpm_tools.io import read_table  # noqa: E402
 
 TOOL = "rise_acceleration"
 
@@ -30,12 +30,7 @@ def main():
     ap.add_argument("--g", type=float, default=9.81)
     ap.add_argument("--window", nargs=2, type=float, default=[0.1, 0.3])
     a = ap.parse_args()
-    if not os.path.isfile(a.probes):
-        fail(TOOL, f"{a.probes}: no such file")
-    cols = read_csv(a.probes)
-    for c in ["time"] + ([a.velocity] if a.velocity else list(a.centre or [])):
-        if c not in cols:
-            fail(TOOL, f"{a.probes}: no column '{c}' (columns: {', '.join(cols)})")
+    cols = read_table(TOOL, a.probes, ["time"] + ([a.velocity] if a.velocity else list(a.centre or [])))
     t = cols["time"]
     t1, t2 = a.window
     w = (t >= t1 - 1e-9) & (t <= t2 + 1e-9)

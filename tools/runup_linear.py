@@ -21,7 +21,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail  # noqa: E402
+from cdmpm_tools.cli import fail  # noqa: E402
 
 
 def bessel_j(n, z):

@@ -13,7 +13,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu import first_piece, read_field_data, read_frame  # noqa: E402
+from cdmpm_tools.frames import first_piece, read_field_data, read_frame  # noqa: E402
 
 
 def by_id(path):

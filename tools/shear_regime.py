@@ -24,11 +24,14 @@ import argparse
 import json
 import math
 import os
+import sys
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RANGES = os.path.join(ROOT, "..", "shared", "data", "ice_and_water.json")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.cli import REPO  # noqa: E402
+
+RANGES = os.path.join(REPO, "..", "shared", "data", "ice_and_water.json")
 G = 9.81
 
 

@@ -39,14 +39,16 @@ import os
 import subprocess
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENE = os.path.join(ROOT, "scenes", "sliding_block_2d.json")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.cli import CDMPM, REPO  # noqa: E402
+from cdmpm_tools.frames import read_pvd, read_vtu  # noqa: E402
+from cdmpm_tools.io import read_csv, read_summary  # noqa: E402
+from cdmpm_tools.plotting import pyplot, save_figure  # noqa: E402
+
+plt = pyplot("sweep_sliding_block")
+SCENE = os.path.join(REPO, "scenes", "sliding_block_2d.json")
 
 
 def agreement_window(scene, d_max=0.6, band=0.3):
@@ -62,7 +64,6 @@ def agreement_window(scene, d_max=0.6, band=0.3):
 def crack_overhang(run_dir, scene, par):
     """Overhang / H in the first frame with broken ice (damage > 0.5) in the slab's upper half near the edge.
     par: the run's parameters as the program resolved them (summary.json)."""
-    from vtu import read_pvd, read_vtu
     H, x_edge, z_bed = par["H"], par["x_edge"], par["z_bed"]
     ice = list(scene["materials"]).index("ice")
     for _, f in sorted(read_pvd(run_dir)):
@@ -97,8 +98,9 @@ def apply_sets(scene, sets):
 def glacier_shortening(run_dir):
     """How much shorter the glacier (body 0 of icebergs.csv, the largest intact body) is along the flow in the
     last frame than in the first. Without an iceberg, a slab whose overhang stays whole keeps its length."""
-    rows = [row for row in csv.DictReader(open(os.path.join(run_dir, "icebergs.csv"))) if row["id"] == "0"]
-    return float(rows[0]["length"]) - float(rows[-1]["length"])
+    bergs = read_csv(os.path.join(run_dir, "icebergs.csv"))
+    length = bergs["length"][bergs["id"] == 0]
+    return float(length[0]) - float(length[-1])
 
 
 def uniaxial_tension_per_p0(M, beta, dim=2):
@@ -136,7 +138,6 @@ def models(scene, ratio):
 def plot_sets(dirs, labels, png):
     """One plot: for each sweep folder its measured L/H (filled: crack started in tension, open: in shear) and its
     two models (cantilever with buoyancy, dashed; shear model with tau_s, solid), in the set's colour."""
-    import numpy as np
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     d = np.linspace(0, 0.95, 200)
     for k, (folder, label) in enumerate(zip(dirs, labels)):
@@ -159,9 +160,7 @@ def plot_sets(dirs, labels, png):
     ax.set_ylim(0, 2.5)
     ax.legend(fontsize=7)
     ax.set_title("sliding block: iceberg length, both sets and both models", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    print(png)
+    print(save_figure(fig, png, dpi=120))
 
 
 def main():
@@ -170,7 +169,7 @@ def main():
     ap.add_argument("--ratios", type=float, nargs="*",
                     help="D/H values (default: 0 0.2 0.4 0.6 0.8 0.9 rho_i/rho_w 0.95 1.0, neutral buoyancy included)")
     ap.add_argument("--out", default="out/sliding_block_sweep")
-    ap.add_argument("--cdmpm", default=os.path.join(ROOT, "build", "cdmpm"))
+    ap.add_argument("--cdmpm", default=CDMPM)
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--jobs", type=int, default=1, help="cases run at once (e.g. 2 on 2 cores)")
     ap.add_argument("--crack-frames", type=float, metavar="DT",
@@ -207,7 +206,7 @@ def main():
             cmd += ["--set", extra]
         print(" ".join(cmd), flush=True)
         rc = subprocess.run(cmd).returncode
-        summary = json.load(open(os.path.join(run_dir, "summary.json")))
+        summary = read_summary(run_dir)
         first = summary.get("first_iceberg")
         if summary["parameters"]["H"] != H:
             sys.exit(f"sweep_sliding_block.py: the run resolved H = {summary['parameters']['H']}, the models use {H}")
@@ -217,8 +216,8 @@ def main():
         else:
             # No iceberg: report the overhang reached (ice front beyond the bed edge, where the front starts)
             # as a lower bound.
-            probes = list(csv.DictReader(open(os.path.join(run_dir, "probes.csv"))))
-            overhang = max(float(p["ice_front"]) for p in probes) - float(probes[0]["ice_front"])
+            front = read_csv(os.path.join(run_dir, "probes.csv"))["ice_front"]
+            overhang = float(front.max() - front[0])
             status = "no_failure" if rc == 0 else f"exit_{rc}"
             if rc == 0 and glacier_shortening(run_dir) > 0.25 * H:
                 # The intact slab got shorter without an iceberg: the overhang broke into pieces smaller than
@@ -258,7 +257,6 @@ def main():
         w.writeheader()
         w.writerows(rows)
     fig, ax = plt.subplots(figsize=(6, 4))
-    import numpy as np
     d = np.linspace(0, 0.99, 200)
     lin = [models(scene, x)[0] for x in d]
     can = [models(scene, x)[1] for x in d]
@@ -279,11 +277,8 @@ def main():
     ax.set_ylim(0, 8)
     ax.legend(fontsize=8)
     ax.set_title(f"sliding block, H/dx = {args.cells_per_H}" + "".join(f", {x}" for x in args.set), fontsize=9)
-    fig.tight_layout()
-    png = os.path.join(args.out, "sliding_block_sweep.png")
-    fig.savefig(png, dpi=120)
     print(path)
-    print(png)
+    print(save_figure(fig, os.path.join(args.out, "sliding_block_sweep.png"), dpi=120))
 
 
 if __name__ == "__main__":

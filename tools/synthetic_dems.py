@@ -19,6 +19,9 @@ import sys
 import numpy as np
 from osgeo import osr
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools.io import write_asc  # noqa: E402
+
 E0, N0, CELL, NX, NY, FRONT = -200000.0, -2200000.0, 20.0, 80, 40, 600.0
 
 
@@ -38,12 +41,7 @@ def main():
     srs.ImportFromEPSG(3413)
     srs.MorphToESRI()
     for name, a in (("bed", bed), ("surface", surface)):
-        with open(os.path.join(out, name + ".asc"), "w") as f:
-            f.write(f"ncols {NX}\nnrows {NY}\nxllcorner {E0}\nyllcorner {N0}\ncellsize {CELL}\nNODATA_value -9999\n")
-            for row in a:
-                f.write(" ".join(f"{v:.3f}" for v in row) + "\n")
-        with open(os.path.join(out, name + ".prj"), "w") as f:
-            f.write(srs.ExportToWkt() + "\n")
+        write_asc(os.path.join(out, name + ".asc"), a, E0, N0, CELL, fmt=".3f", prj=srs.ExportToWkt())
     front = {"type": "FeatureCollection",
              "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3413"}},
              "features": [{"type": "Feature", "properties": {"name": "calving front"},

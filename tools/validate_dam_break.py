@@ -25,8 +25,8 @@ Exit status: 0 if the max |relative error| over 1 <= T <= 3.5 of the finest reso
 --tolerance (default 0.10), 1 if not, 2 on a usage error or a failed run.
 """
 import argparse
-import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -36,7 +36,13 @@ try:
 except ImportError:
     sys.exit("validate_dam_break: needs numpy (and matplotlib for the plot), e.g. /usr/bin/python3 with python3-numpy")
 
-REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdmpm_tools import cli  # noqa: E402
+from cdmpm_tools.io import read_csv, read_summary  # noqa: E402
+from cdmpm_tools.plotting import pyplot, save_figure  # noqa: E402
+
+TOOL = "validate_dam_break"
+REPO = Path(cli.REPO)
 SCENE = REPO / "scenes" / "dam_break_2d.json"
 A = 0.05715           # column width [m] (the column is a wide and 2a high)
 G = 9.81              # gravity of the scene [m/s^2]
@@ -63,15 +69,12 @@ def parse_args():
 
 
 def fail(message):
-    print(f"validate_dam_break: {message}", file=sys.stderr)
-    sys.exit(2)
+    cli.fail(TOOL, message)
 
 
 def finished(run_dir):
-    summary = run_dir / "summary.json"
-    if not summary.is_file():
-        return False
-    return json.loads(summary.read_text()).get("status") == "completed"
+    summary = read_summary(run_dir)
+    return summary is not None and summary.get("status") == "completed"
 
 
 def run_cdmpm(exe, run_dir, n, threads):
@@ -82,15 +85,6 @@ def run_cdmpm(exe, run_dir, n, threads):
     print("$ " + " ".join(cmd), flush=True)
     if subprocess.run(cmd).returncode != 0:
         fail(f"cdmpm failed for dx = a/{n}")
-
-
-def read_csv(path):
-    """Columns of a CSV file with a header line, skipping lines that start with '#': name -> array."""
-    with open(path) as f:
-        lines = [line for line in f if line.strip() and not line.startswith("#")]
-    names = [name.strip() for name in lines[0].split(",")]
-    values = np.array([[float(v) for v in line.split(",")] for line in lines[1:]], ndmin=2)
-    return {name: values[:, i] for i, name in enumerate(names)}
 
 
 def read_front(run_dir):
@@ -136,10 +130,7 @@ def best_time_shift(T_sim, Z_sim, T_exp, Z_exp):
 
 
 def plot(curves, T_exp, Z_exp, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot(TOOL)
     fig, ax = plt.subplots(figsize=(7, 5))
     t_max = max(T.max() for _, T, _ in curves)
     T = np.linspace(0, t_max, 2)
@@ -156,10 +147,7 @@ def plot(curves, T_exp, Z_exp, png):
     ax.set_title(f"2D dam break, a = {A} m, column 2a high")
     ax.grid(alpha=0.3)
     ax.legend(loc="upper left", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    print(f"\nplot: {png}")
+    print(f"\nplot: {save_figure(fig, png, dpi=120)}")
 
 
 def main():

@@ -22,15 +22,16 @@ Not part of the tests.
 """
 import argparse
 import itertools
-import json
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import fail  # noqa: E402
-from vtu import first_piece, read_field_data, read_frame  # noqa: E402
+from cdmpm_tools.cli import fail  # noqa: E402
+from cdmpm_tools.frames import add_frame_arguments, first_piece, frame_file, read_field_data, read_frame  # noqa: E402
+from cdmpm_tools.io import read_scene  # noqa: E402
+from cdmpm_tools.plotting import pyplot, save_figure  # noqa: E402
 
 TOOL = "volume_fraction"
 
@@ -77,21 +78,18 @@ def volume_fraction(x, v0, at, size, faces, dx):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out")
-    ap.add_argument("frame", type=int)
+    add_frame_arguments(ap, material=False)
     ap.add_argument("--material", default="water", help="the material's name (default water)")
     ap.add_argument("--box", type=float, nargs="+", metavar="X", help="XMIN YMIN [ZMIN] XMAX YMAX [ZMAX]")
     ap.add_argument("--png", help="draw psi J and J of the material's particles (2D runs)")
     args = ap.parse_args()
 
-    frame = os.path.join(args.out, f"particles_{args.frame:04d}.vtu")
-    if not os.path.isfile(frame) and os.path.isfile(frame[:-3] + "pvtu"):
-        frame = frame[:-3] + "pvtu"  # a distributed run's frame
+    frame = frame_file(args.out, args.frame)
     scene_path = os.path.join(args.out, "scene.resolved.json")
     for p in (frame, scene_path):
         if not os.path.isfile(p):
             fail(TOOL, f"{p}: no such file")
-    scene = json.load(open(scene_path))
+    scene = read_scene(args.out)
     dim, dx, size = scene["dim"], scene["domain"]["dx"], scene["domain"]["size"]
     all_faces = [a + side for a in "xyz"[:dim] for side in "-+"]  # walls.cpp: faces default to all of them
     faces = sorted({f for b in scene.get("boundaries", []) if b.get("type") == "walls" and b.get("condition") == "slip"
@@ -126,9 +124,7 @@ def main():
     for limit in (1.02, 1.10):
         print(f"psi J > {limit:.2f}: {100 * np.mean(psi * j > limit):.1f} % of the particles")
     if args.png:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot(TOOL)
         fig, ax = plt.subplots(2, 1, figsize=(10, 10))
         for a, v, lim, title in ((ax[0], psi * j, (0.85, 1.15), "claimed volume fraction psi J"), (ax[1], j, (0.97, 1.03), "J")):
             sc = a.scatter(x[mine, 0], x[mine, 1], c=v, s=0.5, vmin=lim[0], vmax=lim[1], cmap="coolwarm")
@@ -136,8 +132,7 @@ def main():
             a.set_aspect("equal")
             a.set_title(f"{title}, t = {meta['TimeValue'][0]:g} s")
             fig.colorbar(sc, ax=a)
-        fig.savefig(args.png, dpi=90)
-        print(f"wrote {args.png}")
+        print(f"wrote {save_figure(fig, args.png, dpi=90, tight=False)}")
 
 
 if __name__ == "__main__":

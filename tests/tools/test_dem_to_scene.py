@@ -28,8 +28,8 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import harness  # noqa: E402
 from harness import check, test  # noqa: E402
-from plot_style import read_asc  # noqa: E402
-from vtu import read_field_data, read_vtu  # noqa: E402
+from cdmpm_tools.frames import read_field_data, read_vtu  # noqa: E402
+from cdmpm_tools.io import read_asc  # noqa: E402
 
 DATA = os.path.join(ROOT, "scenes", "data", "synthetic_glacier")
 TOOL = os.path.join(ROOT, "tools", "dem_to_scene.py")

@@ -28,7 +28,7 @@ import warnings
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TOOL = os.path.join(ROOT, "tools", "ensemble")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from plot_style import read_asc, read_csv  # noqa: E402
+from cdmpm_tools.io import read_asc, read_csv  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from harness import TESTS, Failure, check, test  # noqa: E402

@@ -32,7 +32,7 @@ from netCDF4 import Dataset
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_style import read_asc, read_csv  # noqa: E402
+from cdmpm_tools.io import read_asc, read_csv  # noqa: E402
 import cf_rules  # noqa: E402
 import harness  # noqa: E402
 from harness import check, test  # noqa: E402
