@@ -319,7 +319,9 @@ def calibration_finds_the_synthetic_truth():
                      and np.isfinite(t["gauge_200m_arrival"][k])))
     used = ["iceberg_failure_width", "gauge_200m_arrival"]
     targets = {"targets": [{"quantity": q, "observed": float(t[q][truth]), "sigma": 1e-3 * abs(float(t[q][truth]))}
-                           for q in used], "n_sigma": 1}
+                           for q in used], "n_sigma": 1,
+               "compare": [{"quantity": "gauge_200m_amplitude", "label": "first crest at 200 m [m]",
+                            "observed": [0.01, 0.02], "paper": 0.015}]}
     tpath = write_spec(d, "targets.json", targets)
     out = os.path.join(d, "out")
     shutil.copytree(ref, out)
@@ -343,8 +345,21 @@ def calibration_finds_the_synthetic_truth():
             check(a["p5"] <= v <= a["p95"], f"{q} = {v} outside the predicted band [{a['p5']}, {a['p95']}]")
             checked += 1
     check(checked >= 5, f"only {checked} predicted quantities checked")
+    # The comparison with the observations: the accepted band holds the truth's own value.
+    (c,) = cal["compare"]
+    v = float(t["gauge_200m_amplitude"][truth])
+    check(c["accepted"]["n"] >= 1 and c["accepted"]["min"] <= v <= c["accepted"]["max"],
+          f"compare: the accepted band {c['accepted']} misses the truth's {v}")
+    check(c["prior"]["n"] >= c["accepted"]["n"], f"compare: fewer members overall than accepted: {c}")
     with open(os.path.join(out, "calibration.md")) as f:
-        check("accepted" in f.read(), "calibration.md without the accepted count")
+        md = f.read()
+    check("accepted" in md, "calibration.md without the accepted count")
+    check("| first crest at 200 m [m] | 0.01-0.02 | 0.015 |" in md, "calibration.md without the comparison row")
+    badc = write_spec(d, "bad_compare.json", dict(targets, compare=[{"quantity": "gauge_200m_amplitude",
+                                                                     "paper": [2, 1]}]))
+    r = ensemble("calibrate", out, badc)
+    check(r.returncode == 2 and f"{badc}: compare.0.paper:" in r.stderr and len(r.stderr.strip().splitlines()) == 1,
+          f"a reversed paper range: exit {r.returncode}, {r.stderr.strip()}")
     bad = write_spec(d, "bad_targets.json", {"targets": [{"quantity": "iceberg_colour", "observed": 1, "sigma": 1}]})
     r = ensemble("calibrate", out, bad)
     check(r.returncode == 2 and f"{bad}: targets.0.quantity:" in r.stderr and len(r.stderr.strip().splitlines()) == 1,
