@@ -48,6 +48,29 @@ TEST(Tools, MissingInputsAreOneLineErrors) {
   expect_one_line_error(run_program(kPython, {source_path("tools/resolved_shear.py"), none, "0"}), "resolved_shear", none);
 }
 
+// tools/yield_surfaces_2d.py draws both 2D conventions from one tensile strength: in the reference implementation's
+// convention (`cd_mpm`) the in-plane uniaxial tension it finds on its surface is that strength (the convention
+// defines it so: the loader's p0, src/material/ice.h), within the bisection's and the printout's 4 digits; a
+// non-physical parameter is a one-line error.
+TEST(Tools, YieldSurfacesOfBothConventionsHoldTheirTensileStrength) {
+  TempDir dir;
+  for (const char* st : {"0.7e6", "1.5e6"}) {
+    const auto r = run_program(kPython, {source_path("tools/yield_surfaces_2d.py"), "--tensile-strength", st,
+                                         "--out", dir / "fig"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto at = r.output.find("cd_mpm:");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const auto key = r.output.find("uniaxial tension ", at);
+    ASSERT_NE(key, std::string::npos) << r.output;
+    const double found = std::stod(r.output.substr(key + 17)) * 1e6;
+    EXPECT_NEAR(found, std::stod(st), 1e-3 * std::stod(st)) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "fig/yield_surfaces_2d.png"));
+  }
+  const auto bad = run_program(kPython, {source_path("tools/yield_surfaces_2d.py"), "--beta", "-1", "--out", dir / "x"});
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_EQ(bad.output.rfind("yield_surfaces_2d: ", 0), 0u) << bad.output;
+}
+
 // tools/runup_linear.py against the theory it evaluates (Synolakis 1987): its asymptotic column is the run-up law
 // 2.831 sqrt(cot beta) (H/d)^(5/4) (same closed form, so within the quadrature's 0.5 %), and the exact linear
 // run-up tends to the law when 2 gamma cot beta >> 1: within 5 % at 4.9, where the Bessel functions' next
