@@ -30,6 +30,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cdmpm_tools.cli import REPO  # noqa: E402
+from cdmpm_tools.ice import uniaxial_strength  # noqa: E402
 
 RANGES = os.path.join(REPO, "..", "shared", "data", "ice_and_water.json")
 G = 9.81
@@ -37,13 +38,7 @@ G = 9.81
 
 def uniaxial(M, beta, dim, tension):
     """Uniaxial strength per unit p0 (CohesiveCamClay::uniaxial_strength)."""
-    t = (-1.0 if tension else 1.0) / dim
-    cq2 = 1.5 * (dim - 1) / dim
-    A = (1 + 2 * beta) * cq2 + M * M * t * t
-    B = M * M * t * (beta - 1)
-    C = -M * M * beta
-    disc = np.sqrt(B * B - 4 * A * C)
-    return np.where(B > 0, -2 * C / (B + disc), (-B + disc) / (2 * A))
+    return uniaxial_strength(M, beta, dim, 1.5, tension)
 
 
 def shear(M, beta):

@@ -25,20 +25,10 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cdmpm_tools.cli import REPO, add_output_arguments, output_folder  # noqa: E402
+from cdmpm_tools.ice import uniaxial_strength  # noqa: E402
 from cdmpm_tools.plotting import pyplot, save_figure  # noqa: E402
 
 TOOL = "yield_surfaces_2d"
-
-
-def uniaxial(M, beta, p0, n, qf, tension):
-    """Uniaxial strength of the n x n state (q^2 = qf |dev sigma|^2), as CohesiveCamClay::uniaxial_strength."""
-    t = (-1 if tension else 1) / n
-    cq2 = qf * (n - 1) / n
-    a = (1 + 2 * beta) * cq2 + M * M * t * t
-    b = M * M * t * (beta - 1) * p0
-    c = -M * M * beta * p0 * p0
-    disc = math.sqrt(b * b - 4 * a * c)
-    return (-2 * c) / (b + disc) if b > 0 else (-b + disc) / (2 * a)
 
 
 def convention(name, phi, beta, sigma_t):
@@ -47,7 +37,7 @@ def convention(name, phi, beta, sigma_t):
         M, n, qf = 6 * s / (3 - s), 3, 1.5
     else:
         M, n, qf = 8 / math.sqrt(3) * s / (3 - s), 2, 2.0
-    p0 = sigma_t / uniaxial(M, beta, 1.0, n, qf, True)
+    p0 = sigma_t / float(uniaxial_strength(M, beta, n, qf, True))
     return M, p0
 
 
