@@ -9,7 +9,7 @@ namespace {
 
 // The horizontal box a body can occupy at t = 0: its shape's bounds, and for a rigid body that starts tilted or
 // turns about a hinge (a prescribed motion) the box the shape sweeps about its pivot (the hinge, else the shape's
-// centre) at any angle.
+// centre) at any angle; for a replayed source (rigid key `track`) the shape's box grown by the track's reach.
 std::pair<std::vector<double>, std::vector<double>> source_box(const BodySpec& b, int dim) {
   std::vector<double> lo(dim - 1), hi(dim - 1);
   const bool turns = b.tilt != 0 || !b.motion.empty() || !b.hinge.empty();
@@ -21,9 +21,10 @@ std::pair<std::vector<double>, std::vector<double>> source_box(const BodySpec& b
     reach += far * far;
   }
   reach = std::sqrt(reach);
+  const double replayed = b.track ? b.track->reach() : 0;  // a replayed source moves at most this far
   for (int a = 0; a < dim - 1; ++a) {
-    lo[a] = turns ? std::min(b.shape.lower(a), pivot[a] - reach) : b.shape.lower(a);
-    hi[a] = turns ? std::max(b.shape.upper(a), pivot[a] + reach) : b.shape.upper(a);
+    lo[a] = (turns ? std::min(b.shape.lower(a), pivot[a] - reach) : b.shape.lower(a)) - replayed;
+    hi[a] = (turns ? std::max(b.shape.upper(a), pivot[a] + reach) : b.shape.upper(a)) + replayed;
   }
   return {lo, hi};
 }

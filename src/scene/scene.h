@@ -9,12 +9,14 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "geo/crs.h"
+#include "io/source_track.h"
 #include "material/material.h"
 #include "shape/crevasse_field.h"
 #include "shape/shape.h"
@@ -62,6 +64,7 @@ struct BodySpec {
   double hold_until = 0;           // the body is held at rest until this time [s], then released
   std::vector<std::array<double, 2>> motion;  // hinged only: a prescribed tilt, (time [s], degrees) pairs, piecewise
                                               // linear, held at the last angle after the last time; empty = free
+  std::shared_ptr<const SourceTrack> track;  // a recorded source that the particles follow instead (rigid key `track`)
   // Fluid bodies only: start a solitary wave (sim/solitary_wave.h; key "solitary_wave" of the body).
   std::optional<SolitaryWave> solitary;
   // Ice bodies only: surface crevasses cut from the top, from seeded simplex noise (shape/crevasse_field.h;

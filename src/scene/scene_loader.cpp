@@ -13,6 +13,7 @@
 #include "probe/probe.h"
 #include "scene/json_limits.h"
 #include "scene/parameters.h"
+#include "terrain/terrain_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -234,8 +235,10 @@ class Loader {
 
   // "rigid": {"tilt": degrees, "hinge": [x, y(, z)], "hold_until": seconds, "motion": [[t, degrees], ...]}, all
   // optional; a motion needs a hinge and takes the place of tilt and hold_until (its first angle is the tilt).
+  // Or "track": {"file": path, "origin": [x, z]}: a recorded source the particles follow (io/source_track.h), alone.
   void rigid_options(const Node& r, BodySpec& spec) const {
-    r_.object(r, {"tilt", "hinge", "hold_until", "motion"});
+    r_.object(r, {"tilt", "hinge", "hold_until", "motion", "track"});
+    if (r.has("track")) return track_options(r, spec);
     spec.tilt = r_.number(r, "tilt", {-180, 180, true, true}, 0.0);
     if (r.has("hinge")) {
       spec.hinge = r_.numbers(r["hinge"], dim_);
@@ -255,6 +258,29 @@ class Loader {
       if (!(degrees > -180 && degrees < 180)) r_.expected(m[i], "an angle in (-180, 180) degrees");
     }
     spec.tilt = spec.motion[0][1];
+  }
+
+  // "track": {"file": path relative to the scene, "origin": [x, z] (the scene point, along the flow and up, of the
+  // track's (0, 0); default zeros)}: the body's particles follow the recorded displacements (io/source_track.h).
+  void track_options(const Node& r, BodySpec& spec) const {
+    for (const char* key : {"tilt", "hinge", "hold_until", "motion"})
+      if (r.has(key)) r_.fail(r.child(key), "not allowed together with \"track\" (the track gives the whole motion)");
+    const Node t = r["track"];
+    r_.object(t, {"file", "origin"});
+    if (s_.materials[spec.material_index].contact())
+      r_.fail(r.child("track"), "a body in the shared field: its material (materials." + spec.material +
+                                    ") must not have \"contact\" (a replayed source pushes the water through the grid)");
+    auto track = std::make_shared<SourceTrack>();
+    try {
+      *track = read_source_track(terrain_path(r_.file(), r_.string(r_.required(t, "file"))));
+    } catch (const SceneError& e) {
+      throw SceneError(r_.file() + ": " + t.child("file") + ": " + e.what());
+    }
+    if (t.has("origin")) {
+      const std::vector<double> o = r_.numbers(t["origin"], 2);
+      track->origin = {o[0], o[1]};
+    }
+    spec.track = std::move(track);
   }
 
   // Checked by building it once (each boundary type reads its own keys); the faces it closes or needs closed

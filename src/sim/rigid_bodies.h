@@ -22,6 +22,12 @@
 // it from a(t) to a(t + dt) over the step, whatever the forces: omega = (a(t + dt) - a(t)) / dt about the axis
 // normal to the x-z plane (2D: counter-clockwise; 3D: -y, since the tilt turns +x towards +z). It is a wave maker
 // of given motion, the same in 2D and 3D (scenes/eqip_sermia_3d.json).
+// A replayed body (rigid key `track`, io/source_track.h) is not rigid: each of its particles follows the recorded
+// displacement of the ice that started where it started, x_p(t) = X_p + u(X_p, t) (X_p its seeded position; in 3D u
+// lies in the x-z plane, the same at every y), moving over each step by exactly x_p(t + dt) - x_p(t) at the velocity
+// v_p = (x_p(t + dt) - x_p(t)) / dt, C_p = 0: a recorded 2D failure as a wave maker, in 2D or extruded in 3D
+// (scenes/eqip_sermia_replay_2d.json, scenes/eqip_sermia_replay_3d.json). Its seeded positions are kept by particle id,
+// so a replay runs in one process (resumed too: the seeding that precedes a checkpoint's load gives them again).
 // Before its C_p is replaced, each particle of a body in the shared field has its volume ratio follow the grid:
 // J_p <- min(1, J_p (1 + dt tr C_p)), so the particle's pressure (material/material.h, Rigid) resists other material
 // flowing into the body. The pressure is zero for J >= 1 (no tension), and J is kept at most 1 so that a body that the
@@ -49,6 +55,7 @@
 #include <vector>
 
 #include "core/particles.h"
+#include "io/source_track.h"
 #include "material/material.h"
 #include "parallel/reduction.h"
 #include "scene/scene.h"
@@ -76,6 +83,19 @@ struct RigidBody {
                                                                                       // (set by each projection)
   double angle = 0;  // 2D: counter-clockwise angle from the untilted shape [rad], not wrapped; 3D: angle of `rotation`
   std::vector<std::array<double, 2>> motion;  // driven: prescribed tilt (time [s], degrees), piecewise linear
+  std::shared_ptr<const SourceTrack> track;   // replayed: the recorded displacements its particles follow
+  uint64_t first_id = 0;                      // replayed: the seeded position of particle `id` is start[id - first_id]
+  std::vector<Vec<dim>> start;
+
+  // Replayed: where the particle with this id is at time t, x = X + u(X, t).
+  Vec<dim> replayed_position(uint64_t id, double t) const {
+    constexpr int up = dim - 1;
+    Vec<dim> x = start[id - first_id];
+    const std::array<double, 2> u = track->displacement(x[0], x[up], t);
+    x[0] += static_cast<Real>(u[0]);
+    x[up] += static_cast<Real>(u[1]);
+    return x;
+  }
 
   // The prescribed tilt [rad] at time t: linear between the motion's pairs, held after the last.
   double prescribed_tilt(double t) const {
@@ -177,6 +197,7 @@ class RigidBodies {
       body.material = b.material_index;
       body.hold_until = b.hold_until;
       body.motion = b.motion;
+      body.track = b.track;
       body.hinged = !b.hinge.empty();
       body.contact = materials[b.material_index].contact();
       for (int a = 0; a < dim && body.hinged; ++a) body.pivot[a] = static_cast<Real>(b.hinge[a]);
@@ -184,6 +205,17 @@ class RigidBodies {
       body.angle = b.tilt * std::numbers::pi / 180;
       body_of_[b.material_index] = static_cast<int>(bodies.size());
       bodies.push_back(body);
+    }
+    for (RigidBody<dim>& B : bodies) {  // a replayed body's seeded positions, by id
+      if (!B.track) continue;
+      uint64_t lo = UINT64_MAX, hi = 0;
+      for (size_t q = 0; q < p.size(); ++q)
+        if (p.material[q] == B.material) lo = std::min(lo, p.id[q]), hi = std::max(hi, p.id[q]);
+      if (lo > hi) continue;
+      B.first_id = lo;
+      B.start.assign(hi - lo + 1, Vec<dim>::Zero());
+      for (size_t q = 0; q < p.size(); ++q)
+        if (p.material[q] == B.material) B.start[p.id[q] - lo] = p.x[q];
     }
     project(p, 0.0, 0, dx, keys);
   }
@@ -222,6 +254,11 @@ class RigidBodies {
         B.omega.setZero();
         continue;
       }
+      if (B.track) {  // pass 3 sets each particle's own velocity
+        B.velocity.setZero();
+        B.omega.setZero();
+        continue;
+      }
       if (!B.motion.empty()) {
         const double rate = dt > 0 ? (B.prescribed_tilt(time + dt) - B.prescribed_tilt(time)) / dt
                                    : B.prescribed_rate(time);  // the initial state (no step to cover)
@@ -246,6 +283,13 @@ class RigidBodies {
       if (b < 0) continue;
       const RigidBody<dim>& B = bodies[b];
       if (!B.contact) p.J[q] = std::min(Real(1), p.J[q] * (Real(1) + dt * p.C[q].trace()));
+      if (B.track) {  // the step's displacement over dt (at t = 0 with no step yet: over the first millisecond)
+        const double span = dt > 0 ? static_cast<double>(dt) : 1e-3;
+        p.v[q] = ((B.replayed_position(p.id[q], time + span) - B.replayed_position(p.id[q], time)) /
+                  static_cast<Real>(span));
+        p.C[q].setZero();
+        continue;
+      }
       p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
       p.C[q] = A::skew(B.omega);
     }
@@ -305,8 +349,9 @@ class RigidBodies {
   }
 
   // Moves the rigid particles and the bodies' state rigidly over dt with the velocities set by project(), and
-  // sets the particles' velocities to the body's at their new positions.
-  void advance(Particles<dim>& p, Real dt) {
+  // sets the particles' velocities to the body's at their new positions; a replayed body's particles go to their
+  // recorded positions at time + dt (`time`: the step's start).
+  void advance(Particles<dim>& p, Real dt, double time) {
     if (bodies.empty()) return;
     const std::vector<int>& body_of = body_of_;
     std::vector<Mat<dim>> R(bodies.size());
@@ -336,6 +381,10 @@ class RigidBodies {
       const int b = body_of[p.material[q]];
       if (b < 0) continue;
       const RigidBody<dim>& B = bodies[b];
+      if (B.track) {
+        p.x[q] = B.replayed_position(p.id[q], time + dt);
+        continue;
+      }
       p.x[q] = origin[b] + shift[b] + R[b] * (p.x[q] - origin[b]);
       p.v[q] = B.velocity + A::spin_cross(B.omega, p.x[q] - B.centre);
       p.C[q] = A::skew(B.omega);

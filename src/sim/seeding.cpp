@@ -61,19 +61,21 @@ std::vector<OffGridFace> off_grid_wall_faces(const Scene& scene, const std::vect
   return faces;
 }
 
-// A rigid body's shape turned by its tilt about its hinge (or centre).
+// A rigid body's shape turned by its tilt about its hinge (or centre); a replayed source's (rigid key `track`), the
+// part of its shape that the recorded ice filled at t = 0 (io/source_track.h).
 template <int dim>
 struct Tilted {
   const Shape* shape;
+  const SourceTrack* track;
   Mat<dim> R;
   Vec<dim> pivot;
-  explicit Tilted(const BodySpec& b) : shape(&b.shape), R(RigidAlgebra<dim>::tilt(b.tilt)) {
+  explicit Tilted(const BodySpec& b) : shape(&b.shape), track(b.track.get()), R(RigidAlgebra<dim>::tilt(b.tilt)) {
     for (int a = 0; a < dim; ++a)
       pivot[a] = static_cast<Real>(b.hinge.empty() ? 0.5 * (shape->lower(a) + shape->upper(a)) : b.hinge[a]);
   }
   bool contains(const DVec<dim>& x) const {
     const Vec<dim> u = pivot + R.transpose() * (x.template cast<Real>() - pivot);
-    return shape->contains(u.template cast<double>());
+    return shape->contains(u.template cast<double>()) && (!track || track->occupied(x[0], x[dim - 1]));
   }
 };
 
@@ -172,6 +174,7 @@ class BodySeeder {
   // the body's shape, in the bed layer of one boundary and the solid of no other), or nothing.
   Fill filled(const DVec<dim>& x, Vec<dim>& n) const {
     if (!body_.shape.contains(x)) return Fill::None;
+    if (body_.track && !body_.track->occupied(x[0], x[vertical_axis<dim>])) return Fill::None;
     if (body_.solitary && x[vertical_axis<dim>] >= body_.solitary->surface(x[0])) return Fill::None;
     for (const auto& h : body_.holes)
       if (h.contains(x)) return Fill::None;

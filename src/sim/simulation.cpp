@@ -44,6 +44,11 @@ Simulation<dim>::Simulation(const Scene& s, bool settle) : scene(s), materials(s
   if (!bed_.empty()) bed_.bins.build(bed_.particles, grid);  // fixed particles: binned once
 #ifdef CDMPM_MPI
   if (domain_) domain_->adopt_seeded(particles, grid, &bed_);
+  if (domain_)
+    for (const BodySpec& b : s.bodies)
+      if (b.track)
+        throw SceneError(s.path + ": bodies: a replayed source (rigid key \"track\") runs in one process only (its "
+                         "particles' seeded positions are kept by the process that seeded them); run without mpirun");
   rigid.init(s, materials, particles, grid.dx, domain_ ? &domain_->keys() : nullptr);
 #else
   rigid.init(s, materials, particles, grid.dx);
@@ -409,7 +414,7 @@ void Simulation<dim>::sinks_phase() {
 template <int dim>
 void Simulation<dim>::advect_phase(Real dt) {
   advect(particles, rigid_material_, dt);
-  rigid.advance(particles, dt);
+  rigid.advance(particles, dt, time_);
   keep_inside(particles, boundaries);
 }
 

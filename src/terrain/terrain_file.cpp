@@ -6,6 +6,8 @@
 // then nrows lines of ncols values from the northernmost row to the southernmost.
 #include "terrain/terrain_file.h"
 
+#include "io/line_reader.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -20,112 +22,14 @@
 namespace cdmpm {
 namespace {
 
-using Tokens = std::vector<std::string_view>;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << std::setprecision(12) << v;
-  return s.str();
-}
-
-// A token as shown in a message: quoted, cut at 40 characters.
-std::string shown(std::string_view t) {
-  std::string s = "'";  // appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "'" + string
-  s.append(t.substr(0, 40)).append(t.size() > 40 ? "...'" : "'");
-  return s;
-}
-
-[[noreturn]] void fail(const std::string& path, int line, const std::string& what, const std::string& got) {
-  throw SceneError(path + (line > 0 ? ":" + std::to_string(line) : "") + ": expected " + what + ", got " + got);
-}
-
-// Reads a file line by line, counting lines and refusing lines longer than kMaxLineLength.
-class LineReader {
- public:
-  explicit LineReader(const std::string& path) : path_(path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const auto st = fs::status(path, ec);
-    if (!fs::exists(st)) throw SceneError(path + ": cannot open terrain file (no such file)");
-    if (fs::is_directory(st)) fail(path, 0, "a terrain file", "a directory");
-    in_.open(path, std::ios::binary);
-    if (!in_) throw SceneError(path + ": cannot open terrain file");
-  }
-  // The next line without its end of line ('\n' or "\r\n"); false at the end of the file.
-  bool next(std::string& line) {
-    line.clear();
-    std::streambuf* buf = in_.rdbuf();
-    int c = buf->sbumpc();
-    if (c == std::char_traits<char>::eof()) return false;
-    ++line_;
-    for (; c != std::char_traits<char>::eof() && c != '\n'; c = buf->sbumpc()) {
-      if (line.size() >= kMaxLineLength)
-        fail(path_, line_, "a line of at most " + std::to_string(kMaxLineLength) + " characters", "a longer line");
-      line.push_back(static_cast<char>(c));
-    }
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    return true;
-  }
-  int line() const { return std::max(line_, 1); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  std::ifstream in_;
-  int line_ = 0;
-};
-
-std::string_view trim(std::string_view s) {
-  const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!s.empty() && space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && space(s.back())) s.remove_suffix(1);
-  return s;
-}
-
-Tokens split_whitespace(std::string_view s) {
-  Tokens out;
-  size_t i = 0;
-  while (true) {
-    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-    if (i == s.size()) return out;
-    size_t j = i;
-    while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j]))) ++j;
-    out.push_back(s.substr(i, j - i));
-    i = j;
-  }
-}
-
-Tokens split_commas(std::string_view s) {
-  Tokens out;
-  for (size_t start = 0;;) {
-    const size_t comma = s.find(',', start);
-    out.push_back(trim(s.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-    if (comma == std::string_view::npos) return out;
-    start = comma + 1;
-  }
-}
-
-// The whole token as a number (a leading '+' allowed); false if it is not one. NaN and inf parse.
-bool parse_number(std::string_view t, double& v) {
-  if (t.size() > 1 && t[0] == '+' && t[1] != '-') t.remove_prefix(1);
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  return !t.empty() && ec == std::errc() && end == t.data() + t.size();
-}
-
-// A finite number, or an error at the reader's current line.
-double finite_number(const LineReader& in, std::string_view t, const std::string& what) {
-  double v = 0;
-  if (!parse_number(t, v)) fail(in.path(), in.line(), what, shown(t));
-  if (!std::isfinite(v)) fail(in.path(), in.line(), "a finite " + what.substr(what.find(' ') + 1), shown(t));
-  return v;
-}
+using namespace text;
 
 }  // namespace
 
 // ---- CSV profile -----------------------------------------------------------------------------------------
 
 TerrainProfile read_profile_csv(const std::string& path) {
-  LineReader in(path);
+  LineReader in(path, "terrain file");
   TerrainProfile p;
   p.path = path;
   bool header_allowed = true;
@@ -245,7 +149,7 @@ std::array<std::size_t, 2> grid_header(LineReader& in, const std::map<std::strin
 }  // namespace
 
 TerrainGrid read_esri_ascii(const std::string& path) {
-  LineReader in(path);
+  LineReader in(path, "terrain file");
   TerrainGrid g;
   g.path = path;
   std::string line;

@@ -18,11 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "io/line_reader.h"
 #include "scene/scene_reader.h"
 
 namespace cdmpm {
 
-inline constexpr std::size_t kMaxLineLength = std::size_t(1) << 24;  // characters per line (16 MiB)
+using text::kMaxLineLength;                                          // characters per line (io/line_reader.h)
 inline constexpr std::size_t kMaxGridNodes = 100'000'000;            // ncols * nrows of an .asc grid
 inline constexpr std::size_t kMaxProfilePoints = 10'000'000;         // data rows of a CSV profile
 
