@@ -3,8 +3,10 @@
 
 Reads README.md and docs/*.md (not the changelog, which records what was run then) and collects the commands they
 quote: each line of a fenced ```bash block (continuation lines joined, comments dropped, `VAR=value` lines expanded
-into the lines after them) and each inline `code` span that starts like a command: `build/cdmpm ...`,
-`tools/NAME ARG...`, `bash tools/...`, `/usr/bin/python3 tools/...` (or tests/tools/...), `xvfb-run ... tools/...`.
+into the lines after them), each line of an unlabelled fenced block that starts with a command of the project, and
+each inline `code` span that starts like a command: `build/cdmpm ...`, `tools/NAME ARG...`, `bash tools/...`,
+`/usr/bin/python3 tools/...` (or tests/tools/...), `xvfb-run ... tools/...`. A `tools/x.py ARGS` quoted without its
+interpreter is run with /usr/bin/python3 when the script is not executable.
 Commands of other programs (cmake, ctest, apt-get, gdalinfo, mpirun of a benchmark, `python3 -c`, heredocs) are
 not checked; `mpirun ... build-mpi/cdmpm ...` is checked as the serial program's command.
 
@@ -19,10 +21,16 @@ Each command is one of three kinds:
   run       any other command: run in a temporary folder that holds copies of tools/, scenes/, tests/ and docs/
             and the program as build/cdmpm, one doc's commands in the doc's order (so a tool finds the run an
             earlier command made); `output/...` and `/tmp/...` land in the temporary folder. A `cdmpm run` gets
-            `--steps 3 --quiet` (unless it names them) and the COARSE values of its scene. It must exit with 0.
+            `--steps 3 --quiet` (unless it names them) and the COARSE values of its scene; a run `--out DIR` writes
+            to tmp/DIR (and DIR in the rest of its line is that folder). It must exit with 0.
+
+A span that quotes `--set path=value` alone must name a path that some shipped scene knows (`cdmpm check` answers
+it with no unknown key, parameter or element); `--set PATH=...`, `--set parameters.NAME=...` and
+`--set key.path=value` name no path.
 
 Every tool a command names must answer `--help` (exit 0, an argparse usage) or be in NO_HELP, which says how it
-runs on a small input instead; shell scripts must pass `bash -n`.
+runs on a small input instead; shell scripts must pass `bash -n`. The ParaView tools run only where pvpython and
+xvfb-run are installed (elsewhere: that they exist).
 
 Usage: /usr/bin/python3 tests/tools/check_docs_commands.py REPO_ROOT PATH/TO/cdmpm [--verbose] [--keep]
        (ctest -R Docs.QuotedCommandsRun runs it on the build's program)
@@ -179,10 +187,10 @@ def prose(lines):
 
 
 def code_spans(lines):
-    """(line, text) of every inline `code` span (a span may run over a line break)."""
+    """(line, text) of every inline `code` span (a span may run over a line break, not over a blank line)."""
     text = prose(lines)
     return [(text.count('\n', 0, m.start()) + 1, ' '.join(m.group(1).split()))
-            for m in re.finditer(r'`([^`]+)`', text)]
+            for m in re.finditer(r'`((?:[^`\n]|\n(?![ \t]*\n))+)`', text)]
 
 
 def inline_commands(lines):
@@ -332,12 +340,11 @@ class Checker:
             # first the scenes that hold the key's name, then those the doc names
             scenes = sorted(files, key=lambda f: (leaf not in texts[f],
                                                   os.path.splitext(os.path.basename(f))[0] not in doc_text, f))
-            placeholder = is_placeholder(value.split('=', 1)[-1]) or value.endswith('=')
             errors = []
             for scene in scenes:
                 coarse = COARSE.get(os.path.splitext(os.path.basename(scene))[0], [])
                 rc, text = self.call([self.cdmpm, 'check', scene] + coarse + ['--set', value])
-                if rc == 0 or (placeholder and not KEY_ERROR.search(text)):
+                if rc == 0 or not KEY_ERROR.search(text):  # known keys (a value may need the span's other values)
                     break
                 errors.append(text.strip().splitlines()[-1] if text.strip() else 'exit %d' % rc)
             else:
