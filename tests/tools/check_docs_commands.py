@@ -19,9 +19,10 @@ Each command is one of three kinds:
             values, and each `--set` whose value is a placeholder names a key the program knows.
   long      a concrete command listed in LONG below (what it produces and how long it takes): checked as a synopsis.
   run       any other command: run in a temporary folder that holds copies of tools/, scenes/, tests/ and docs/
-            and the program as build/cdmpm, one doc's commands in the doc's order (so a tool finds the run an
+            (added to a git index there, so that a tool refuses to write over them without --force, as in the
+            repository) and the program as build/cdmpm, one doc's commands in the doc's order (so a tool finds the run an
             earlier command made); `output/...` and `/tmp/...` land in the temporary folder. A `cdmpm run` gets
-            `--steps 3 --quiet` (unless it names them) and the COARSE values of its scene; a run `--out DIR` writes
+            `--steps 3 --quiet` (unless it names them or its scene is in WHOLE) and the COARSE values of its scene; a run `--out DIR` writes
             to tmp/DIR (and DIR in the rest of its line is that folder). It must exit with 0.
 
 A span that quotes `--set path=value` alone must name a path that some shipped scene knows (`cdmpm check` answers
@@ -65,7 +66,11 @@ LONG = {
     'build/cdmpm run scenes/calving_3d.json': 'the 25-million-particle scale scene (minutes per step)',
     'build/cdmpm run scenes/dam_break_3d.json': 'the benchmark size, 2 million particles (40 s for 10 steps)',
     'build/cdmpm linear-waves': "a finished run's gauge records (wave_celerity_2d: 18 s)",
+    'tools/plot_frames.py output/eqip_calibrated_dx5': 'frames 0-8 of the 6-minute run of the calibrated cliff',
 }
+
+# Scenes run to their end here, not for 3 steps (a few seconds each), for the tools that read their later frames.
+WHOLE = {'ice_shear_2d'}
 
 # Values appended to a run of a scene here (after the command's own), for scenes too big for a few steps.
 COARSE = {
@@ -410,7 +415,8 @@ class Checker:
     def run(self, where, command, words, kind, i):
         text = command.replace('/tmp/', os.path.join(self.sandbox, 'tmp') + '/')
         if kind == 'cdmpm' and 'run' in words[i + 1:i + 2]:
-            extra = [] if '--steps' in words else ['--steps', '3']
+            whole = any(os.path.splitext(os.path.basename(w))[0] in WHOLE for w in words if w.endswith('.json'))
+            extra = [] if '--steps' in words or whole else ['--steps', '3']
             extra += [] if '--quiet' in words else ['--quiet']
             for w in words:
                 extra += COARSE.get(os.path.splitext(os.path.basename(w))[0], []) if w.endswith('.json') else []
@@ -464,6 +470,9 @@ def make_sandbox(root, cdmpm):
     for folder in ('tools', 'scenes', 'tests', 'docs'):
         shutil.copytree(os.path.join(root, folder), os.path.join(sandbox, folder),
                         ignore=shutil.ignore_patterns('__pycache__'))
+    # the copies as a repository's files, so that a tool refuses to write over them without --force, as it does here
+    for git in (['init', '-q'], ['add', '-A']):
+        subprocess.run(['git', '-C', sandbox] + git, check=True, capture_output=True)
     os.makedirs(os.path.join(sandbox, 'build'))
     os.symlink(os.path.abspath(cdmpm), os.path.join(sandbox, 'build', 'cdmpm'))
     os.makedirs(os.path.join(sandbox, 'tmp'))
