@@ -20,10 +20,11 @@ Each command is one of three kinds:
   long      a concrete command listed in LONG below (what it produces and how long it takes): checked as a synopsis.
   run       any other command: run in a temporary folder that holds copies of tools/, scenes/, tests/ and docs/
             (added to a git index there, so that a tool refuses to write over them without --force, as in the
-            repository) and the program as build/cdmpm, one doc's commands in the doc's order (so a tool finds the run an
-            earlier command made); `output/...` and `/tmp/...` land in the temporary folder. A `cdmpm run` gets
-            `--steps 3 --quiet` (unless it names them or its scene is in WHOLE) and the COARSE values of its scene; a run `--out DIR` writes
-            to tmp/DIR (and DIR in the rest of its line is that folder). It must exit with 0.
+            repository) and the program as build/cdmpm, one doc's commands in the doc's order (so that a tool finds
+            the run an earlier command made); `output/...` and `/tmp/...` land in the temporary folder. A
+            `cdmpm run` gets `--steps 3 --quiet` (unless it names them or its scene is in WHOLE) and the COARSE
+            values of its scene; a run `--out DIR` writes to tmp/DIR (and DIR in the rest of its line is that
+            folder). It must exit with 0.
 
 A span that quotes `--set path=value` alone must name a path that some shipped scene knows (`cdmpm check` answers
 it with no unknown key, parameter or element); `--set PATH=...`, `--set parameters.NAME=...` and
@@ -47,7 +48,8 @@ import sys
 import tempfile
 import time
 
-# Concrete commands not run here: the tool or scene prefix, and what it does instead (and how long it takes).
+# Concrete commands not run here: the tool or scene prefix, and what it does instead (and how long it takes). An entry
+# that no quoted command matches is an offence.
 LONG = {
     'bash tools/quickstart.sh': 'installs the packages, builds, runs the default scene (about 4 min)',
     'bash tools/test.sh': 'builds and runs the whole test suite and the MPI build (about 25 min)',
@@ -56,17 +58,15 @@ LONG = {
     'tools/ensemble calibrate': 'reads a finished ensemble run (tools/ensemble run)',
     'tools/validate_lab': 'the three laboratory scenes and their report (4 to 10 min)',
     'tools/validate_eqip': 'eqip_sermia_2d per seed and its report (5 min to hours)',
-    'tools/validate_runup': 'solitary_runup_2d and its report (about 1 min)',
     'tools/eqip_2d_to_3d': 'eqip_sermia_block_2d and eqip_sermia_3d (about 30 min)',
     'tools/sweep_sliding_block.py': 'sliding_block_2d at each D/H (10 min to hours)',
     'tools/validate_dam_break.py': 'dam_break_2d at two resolutions (several minutes)',
-    'tools/contact_share_phi.py': 'rigid_rise_contact_2d at several resolutions',
     'tests/tools/test_handoff.py': 'the ctest Handoff.ShallowWaterFromSnapshotMatchesGauges (about 45 s)',
     'tools/reflection.py': 'needs two runs whose waves reached the layer (time.end=14: minutes)',
     'build/cdmpm run scenes/calving_3d.json': 'the 25-million-particle scale scene (minutes per step)',
     'build/cdmpm run scenes/dam_break_3d.json': 'the benchmark size, 2 million particles (40 s for 10 steps)',
     'build/cdmpm linear-waves': "a finished run's gauge records (wave_celerity_2d: 18 s)",
-    'tools/plot_frames.py output/eqip_calibrated_dx5': 'frames 0-8 of the 6-minute run of the calibrated cliff',
+    'tools/plot_frames.py output/eqip_calibrated_dx5': 'frames 0-8 of the 9-minute run of the calibrated cliff',
 }
 
 # Scenes run to their end here, not for 3 steps (a few seconds each), for the tools that read their later frames.
@@ -257,10 +257,14 @@ def is_synopsis(words):
     return any(is_placeholder(w) for w in words)
 
 
+LONG_USED = set()
+
+
 def long_reason(command):
     for prefix, reason in LONG.items():
         bare = prefix.split(' ', 1)[1] if prefix.startswith('bash ') else prefix
         if re.search(r'(^|[\s/])' + re.escape(bare) + r'(\s|$)', command):
+            LONG_USED.add(prefix)
             return reason
     return None
 
@@ -449,16 +453,15 @@ class Checker:
             self.check_cdmpm(where, command, words, i)
         else:
             self.check_tool(where, command, words, i)
-        reason = long_reason(command)
         mpi = words[0] == 'mpirun' or any(w.startswith('build-mpi/') for w in words)
         if is_synopsis(words[i:]) or mpi:
             self.counts['synopsis'] += 1
         elif 'pvpython' in words and not HAVE_PARAVIEW:
             self.counts['paraview'] += 1
             note('no ParaView here, not run:', command)
-        elif reason:
+        elif long_reason(command):
             self.counts['long'] += 1
-            note('long:', command, '-', reason)
+            note('long:', command, '-', long_reason(command))
         else:
             self.counts['run'] += 1
             if len(self.offences) == found:  # refused already: not run
@@ -502,6 +505,8 @@ def main():
         else:
             checker.offences.append('tests/tools/check_docs_commands.py: no run here wrote a frame and a stations.nc'
                                     ' for NO_HELP')
+        for prefix in sorted(set(LONG) - LONG_USED):
+            checker.offences.append('tests/tools/check_docs_commands.py: LONG %r: no quoted command is that' % prefix)
     finally:
         if '--keep' in sys.argv:
             print('kept', sandbox)
