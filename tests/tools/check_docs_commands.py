@@ -341,14 +341,20 @@ class Checker:
         """--set values quoted alone: each must be accepted by a shipped scene (those the doc names first)."""
         files = glob.glob(os.path.join(self.root, 'scenes', '*.json'))
         texts = {f: open(f).read() for f in files}
+        values = [v for v in values if not any(is_placeholder(part) for part in v.split('=', 1)[0].split('.'))
+                  and v.split('=', 1)[0] not in ANY_PATH]
+
+        def candidates(value):  # first the scenes that hold the key's name, then those the doc names
+            leaf = '"%s"' % [part for part in value.split('=', 1)[0].split('.') if not part.isdigit()][-1]
+            return sorted(files, key=lambda f: (leaf not in texts[f],
+                                                os.path.splitext(os.path.basename(f))[0] not in doc_text, f))
+        if len(values) > 1:  # the span's values together, on the first value's scene: one run when all are known
+            scene = candidates(values[0])[0]
+            coarse = COARSE.get(os.path.splitext(os.path.basename(scene))[0], [])
+            if self.call([self.cdmpm, 'check', scene] + coarse + [a for v in values for a in ('--set', v)])[0] == 0:
+                return
         for value in values:
-            path = value.split('=', 1)[0]
-            if any(is_placeholder(part) for part in path.split('.')) or path in ANY_PATH:
-                continue
-            leaf = '"%s"' % [part for part in path.split('.') if not part.isdigit()][-1]
-            # first the scenes that hold the key's name, then those the doc names
-            scenes = sorted(files, key=lambda f: (leaf not in texts[f],
-                                                  os.path.splitext(os.path.basename(f))[0] not in doc_text, f))
+            scenes = candidates(value)
             errors = []
             for scene in scenes:
                 coarse = COARSE.get(os.path.splitext(os.path.basename(scene))[0], [])
