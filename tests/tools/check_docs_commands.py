@@ -43,6 +43,7 @@ import os
 import re
 import shlex
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -279,10 +280,15 @@ class Checker:
         self.offences.append('%s:%d: %s: %s' % (os.path.relpath(where[0], self.root), where[1], command, what))
 
     def call(self, argv, cwd=None, timeout=120):
+        """(exit code, output) of ARGV; on a timeout its whole process group (a shell line's programs) is ended."""
+        p = subprocess.Popen(argv, cwd=cwd or self.sandbox, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True, start_new_session=True)
         try:
-            p = subprocess.run(argv, cwd=cwd or self.sandbox, env=ENV, capture_output=True, text=True, timeout=timeout)
-            return p.returncode, p.stdout + p.stderr
+            output = p.communicate(timeout=timeout)[0]
+            return p.returncode, output
         except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.communicate()
             return -1, 'timed out after %d s' % timeout
 
     def help_text(self, argv):
