@@ -5,6 +5,7 @@
 // no particle. `cdmpm check` takes several scenes and reports each one's estimate and seeded particles.
 #include <gtest/gtest.h>
 
+#include "bad_scenes.h"
 #include "cli_helpers.h"
 #include "run/run_estimate.h"
 #include "scene/scene_loader.h"
@@ -63,7 +64,8 @@ TEST(RunLimits, CheckReportsEachScenesEstimate) {
   EXPECT_NE(r.output.find("dam_break_2d.json: valid 2D scene"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("particles <= "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("first dt "), std::string::npos) << r.output;
-  const auto bad = run_cdmpm({"check", kScene, source_path("tests/bad_scenes/dx_negative.json")});
+  TempDir dir;
+  const auto bad = run_cdmpm({"check", kScene, write_bad_scenes(dir.path, "dx_negative").at(0).path});
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("calving_front_2d.json: valid"), std::string::npos) << "the good scene is still reported";
 }
