@@ -1,6 +1,6 @@
 // test_reference_step.cpp - the optimised engine step (Simulation<dim>::step: sparse blocked grid, coloured
 // block scatter, dense patches, particle reordering) against the slow dense textbook step of
-// tests/unit/reference_step.h, on water and ice blobs in 2D and 3D.
+// tests/common/reference_step.h, on water and ice blobs in 2D and 3D.
 //
 // Each scene is a blob well inside the domain (at least 0.25 of the domain from every wall, many cells more
 // than the 1.5 dx stencil reach and the few dx it moves), so the walls' mirror folding never has mass to

@@ -29,7 +29,9 @@
 #include "sim/simulation.h"
 
 namespace cdmpm {
-namespace {
+// Named, not anonymous: its constants (g, dx, h, ...) have the names of other test files' constants, and a unity
+// batch shares the anonymous namespace of its files.
+namespace dam_break_onset_test {
 
 constexpr double g = 9.81, rho = 1000, a = 0.05715, H = 2 * a, pi = 3.14159265358979323846;
 constexpr int modes = 400;
@@ -99,5 +101,5 @@ TEST(DamBreakOnset, MomentumAndFaceAccelerationMatchPotentialFlow) {
   RecordProperty("face_acceleration_ratio", std::to_string(num / den));
 }
 
-}  // namespace
+}  // namespace dam_break_onset_test
 }  // namespace cdmpm

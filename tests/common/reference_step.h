@@ -1,5 +1,5 @@
 // reference_step.h - a slow, dense, textbook MPM step written from the equations, to check the optimised
-// engine step (sim/simulation.cpp) against (tests/unit/test_reference_step.cpp).
+// engine step (sim/simulation.cpp) against (tests/engine/test_reference_step.cpp).
 //
 // Nothing here is shared with the engine's transfers or grid: one dense array of nodes over the whole domain
 // lattice (nodes i dx, i in [-ghost, n_cells + ghost] per axis), plain loops over the particles, and the

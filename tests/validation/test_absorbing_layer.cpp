@@ -10,8 +10,8 @@
 // runs, so the difference is what came back from the layer. Over its largest incident amplitude at the same gauge,
 // it must be below 0.05. (With the layer removed, the same measure gives 0.996 for the solitary wave: the gauge
 // sees a reflection; docs/water.md#absorbing-layer.)
-// Also: still water against the layer is not drained (its spillway removes nothing, the surface stays flat), and
-// bad keys are refused with exit code 2 naming file and key.
+// Also: still water against the layer is not drained (its spillway removes nothing, the surface stays flat). Bad
+// keys: tests/unit/test_absorbing_layer_input.cpp, tests/end_to_end/test_absorbing_layer_cli.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,7 +22,9 @@
 #include "validation/linear_dispersion.h"
 
 namespace cdmpm::testing {
-namespace {
+// Named, not anonymous: its constants (g, dx, h, ...) have the names of other test files' constants, and a unity
+// batch shares the anonymous namespace of its files.
+namespace absorbing_layer_test {
 
 constexpr double g = 9.81;
 
@@ -116,78 +118,5 @@ TEST(AbsorbingBoundary, StillWaterIsNotDrained) {
   EXPECT_LT(max_abs(r.gauge), 1e-3);
 }
 
-std::string refused(const nlohmann::json& boundary, const nlohmann::json& wall_faces = {"x-", "x+", "y-"}) {
-  nlohmann::json j = {{"dim", 2},
-                      {"domain", {{"size", {20.0, 1.5}}, {"dx", 0.125}}},
-                      {"time", {{"end", 1.0}, {"frame_interval", 1.0}}},
-                      {"materials", {{"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1e6}}}}},
-                      {"bodies", {{{"material", "water"}, {"particles_per_cell", 4}, {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {20, 1}}}}}}},
-                      {"boundaries", {{{"type", "walls"}, {"condition", "slip"}, {"faces", wall_faces}}, boundary}}};
-  try {
-    scene_from_json(j, "layer.json");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
-
-TEST(AbsorbingBoundary, InputErrorsNameTheKey) {
-  const nlohmann::json ok = {{"type", "absorbing_layer"}, {"face", "x+"}, {"width", 3.0}, {"still_level", 1.0}, {"depth", 1.0}};
-  EXPECT_EQ(refused(ok), "accepted");
-  auto with = [&](const std::string& key, const nlohmann::json& value) {
-    nlohmann::json b = ok;
-    b[key] = value;
-    return refused(b);
-  };
-  auto without = [&](const std::string& key) {
-    nlohmann::json b = ok;
-    b.erase(key);
-    return refused(b);
-  };
-  auto has = [](const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; };
-  std::string m = with("sponge", 1.0);
-  EXPECT_TRUE(has(m, "layer.json") && has(m, "boundaries[1].sponge") && has(m, "unknown key")) << m;
-  m = with("width", -1.0);
-  EXPECT_TRUE(has(m, "boundaries[1].width") && has(m, "at least 2 dx")) << m;
-  m = with("width", 30.0);
-  EXPECT_TRUE(has(m, "boundaries[1].width")) << m;
-  m = with("face", "y-");
-  EXPECT_TRUE(has(m, "boundaries[1].face") && has(m, "x+")) << m;
-  m = with("face", "z+");
-  EXPECT_TRUE(has(m, "boundaries[1].face")) << m;
-  m = with("depth", 2.0);
-  EXPECT_TRUE(has(m, "boundaries[1].depth") && has(m, "still_level")) << m;
-  m = with("still_level", 0.0);
-  EXPECT_TRUE(has(m, "boundaries[1].still_level")) << m;
-  m = with("strength", -5.0);
-  EXPECT_TRUE(has(m, "boundaries[1].strength")) << m;
-  m = with("spill_width", 4.0);
-  EXPECT_TRUE(has(m, "boundaries[1].spill_width")) << m;
-  m = with("spill_level", 0.5);  // the spillway's lower edge below the still level
-  EXPECT_TRUE(has(m, "boundaries[1].spill_level") && has(m, "[1, 1.5]")) << m;
-  EXPECT_EQ(with("spill_level", 1.2), "accepted");
-  m = with("condition", "slip");
-  EXPECT_TRUE(has(m, "boundaries[1].condition") && has(m, "unknown key")) << m;
-  m = refused(ok, {"x-", "y-"});  // the face the layer lies in front of is open
-  EXPECT_TRUE(has(m, "boundaries[1].face") && has(m, "walls") && has(m, "x+")) << m;
-  m = without("face");
-  EXPECT_TRUE(has(m, "boundaries[1].face") && has(m, "required")) << m;
-  m = without("width");
-  EXPECT_TRUE(has(m, "boundaries[1].width") && has(m, "required")) << m;
-}
-
-// The program refuses a bad layer with exit code 2, naming the file and the key, and writes nothing.
-TEST(AbsorbingBoundary, CliRefusesBadLayerWithExitCode2) {
-  TempDir dir;
-  for (const std::string set : {"boundaries.1.width=-6", "boundaries.1.face=y+", "boundaries.1.sponge=1"}) {
-    const CliResult r = run_cdmpm({"run", source_path("scenes/absorbing_solitary_2d.json"), "--out", dir / "x",
-                                   "--set", set, "--quiet"});
-    EXPECT_EQ(r.exit_code, 2) << set << "\n" << r.output;
-    const std::string key = set.substr(0, set.find('='));
-    EXPECT_NE(r.output.find("absorbing_solitary_2d.json"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(key.substr(std::string("boundaries.1.").size())), std::string::npos) << r.output;
-  }
-}
-
-}  // namespace
+}  // namespace absorbing_layer_test
 }  // namespace cdmpm::testing

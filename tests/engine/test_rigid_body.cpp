@@ -1,8 +1,8 @@
 // test_rigid_body.cpp - rigid bodies (sim/rigid_bodies.h) against mechanics: free fall in air with g, exact
 // conservation of linear and angular momentum of an isolated spinning block (2D and 3D), a hinged bar's
 // initial angular acceleration m g d / I_o, a block sliding down a frictionless support plane at g sin(theta)
-// and falling freely where the plane is bounded away (half-plane `within`), a held block at rest until its release, a block lighter than
-// water floating at the draft of Archimedes' principle, and the initial rise of a submerged block against potential
+// and falling freely where the plane is bounded away (half-plane `within`), a held block at rest until its release (a block lighter than
+// water floating at the draft of Archimedes' principle: tests/validation/test_rigid_body_float.cpp), and the initial rise of a submerged block against potential
 // flow, a = (rho_w - rho_b) V g / (m + m_a), m_a = C_A rho_w pi (D/2)^2, C_A = 1.51 for a square (DNV-RP-C205
 // table A-1; Brennen 1982: m_a = 4.754 rho_w (D/2)^2), rho_w the water's density at the block (rise_reference.h):
 // closer under refinement, and within 15 % at D/16 in the shared field. The buoyancy criteria not met yet
@@ -22,6 +22,7 @@
 #include "rise_reference.h"
 #include "scene/scene_loader.h"
 #include "sim/simulation.h"
+#include "scene_builders.h"
 
 namespace cdmpm {
 namespace {
@@ -302,72 +303,6 @@ TEST(RigidBody, HeldBlockIsReleasedAtHoldTime) {
   EXPECT_NEAR(z0 - sim.rigid.bodies[0].centre[1], 0.5 * g * s * s, 0.02 * 0.5 * g * s * s);
 }
 
-// A 2 m wide tank of still water 0.5 m deep (dx = 0.025 m) with a rigid block of density 920, 0.4 m wide, between
-// heights y0 and y1.
-json float_tank(double y0, double y1) {
-  json j = json::parse(R"({
-    "dim": 2,
-    "domain": {"size": [2.0, 1.0], "dx": 0.025},
-    "time": {"end": 6, "frame_interval": 0.5},
-    "materials": {
-      "water": {"type": "water", "density": 1000, "bulk_modulus": 4e5, "viscosity": 1e-3},
-      "block": {"type": "rigid", "density": 920, "bulk_modulus": 4e5}
-    },
-    "bodies": [
-      {"material": "block", "particles_per_cell": 4, "shape": {"type": "box", "min": [0.8, 0], "max": [1.2, 0]}},
-      {"material": "water", "particles_per_cell": 4, "shape": {"type": "box", "min": [0, 0], "max": [2.0, 0.5]}}
-    ],
-    "boundaries": [{"type": "walls", "condition": "slip", "faces": ["x-", "x+", "y-"]}]
-  })");
-  j["bodies"][0]["shape"]["min"][1] = y0;
-  j["bodies"][0]["shape"]["max"][1] = y1;
-  return j;
-}
-
-// The block of float_tank, of height H_b, floats at the draft of Archimedes' principle, (920 / 1000) H_b, within
-// 5 %, and is then at rest (its largest speed small against the heave speed sqrt(g d)).
-void expect_archimedes_draft(double draft, double speed, double H_b) {
-  const double expected = 920.0 / 1000.0 * H_b;
-  std::printf("draft %.5f m (Archimedes %.5f m), largest speed over the last second %.5f m/s\n", draft, expected, speed);
-  EXPECT_NEAR(draft, expected, 0.05 * expected);
-  EXPECT_LT(speed, 0.05 * std::sqrt(g * expected));
-}
-
-// A block of density 920 and height H_b, released with its bottom at the still water level in a 2 m wide
-// tank, floats and comes to rest with draft d = (920 / 1000) H_b (Archimedes) within 5 %: draft = water level
-// far from the block (gauge, absolute height) - bottom of the block (centre - H_b / 2), averaged over the
-// last second; the block is then at rest (its speed is small against the heave speed sqrt(g d)).
-TEST(RigidBody, LightBlockFloatsAtArchimedesDraft) {
-  using namespace cdmpm::testing;
-  const double H_b = 0.2, level = 0.5;
-  json j = float_tank(0.45, 0.65);
-  j.update(json::parse(R"({
-    "probes": {"interval": 0.05, "list": [
-      {"name": "block", "type": "rigid_position", "material": "block"},
-      {"name": "speed", "type": "rigid_velocity", "material": "block"},
-      {"name": "angle", "type": "rigid_angle", "material": "block"},
-      {"name": "level", "type": "wave_gauge", "position": [0.2], "still_level": 0}]},
-    "output": {"frames": false}
-  })"));
-  ASSERT_DOUBLE_EQ(j["bodies"][0]["shape"]["max"][1].get<double>() - j["bodies"][0]["shape"]["min"][1].get<double>(), H_b);
-  ASSERT_DOUBLE_EQ(j["bodies"][1]["shape"]["max"][1].get<double>(), level);
-  TempDir dir;
-  std::ofstream(dir / "float.json") << j.dump();
-  const auto r = run_cdmpm({"run", dir / "float.json", "--out", dir / "out", "--quiet"});
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto p = read_probes(dir / "out/probes.csv");
-  const auto& t = p.at("time");
-  double draft = 0, speed = 0, n = 0;
-  for (size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= t.back() - 1.0) {
-      draft += p.at("level")[i] - (p.at("block_y")[i] - H_b / 2);
-      speed = std::max(speed, std::hypot(p.at("speed_x")[i], p.at("speed_y")[i]));
-      EXPECT_NEAR(p.at("angle")[i], 0, std::max(1e-6, 1e3 * std::numeric_limits<Real>::epsilon()));  // symmetry
-      ++n;
-    }
-  expect_archimedes_draft(draft / n, speed, H_b);
-}
-
 // The submerged block of scenes/rigid_rise_2d.json (0.4 m square, density 920, centred 1 m deep in a 4 m x 2 m
 // pool) released at rest: its acceleration, the slope of its velocity over [0.1, 0.3] s (after the acoustic
 // start-up: sqrt(K / rho) = 32 m/s crosses the block in 0.013 s), at cell size dx.
@@ -492,7 +427,7 @@ TEST(RigidBody, StirredPoolKeepsItsLevelWithInterpolatedContinuity) {
 // --gtest_also_run_disabled_tests.
 TEST(RigidBody, DISABLED_SubmergedBlockRisesAndFloatsAtArchimedesDraft) {
   const double H_b = 0.2;
-  json j = float_tank(0.25, 0.25 + H_b);
+  json j = testing::float_tank(0.25, 0.25 + H_b);
   j["bodies"][0]["surface_level"] = 0.5;
   for (const char* m : {"water", "block"})
     j["materials"][m].update(json::parse(R"({"j_bar": true, "flip": 1, "xpic": 4})"));
@@ -515,7 +450,7 @@ TEST(RigidBody, DISABLED_SubmergedBlockRisesAndFloatsAtArchimedesDraft) {
     speed = std::max(speed, static_cast<double>(B.velocity.norm()));
     ++n;
   }
-  expect_archimedes_draft(draft / n, speed, H_b);
+  testing::expect_archimedes_draft(draft / n, speed, H_b);
 }
 
 }  // namespace

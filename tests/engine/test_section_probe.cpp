@@ -7,8 +7,8 @@
 //     and as the regression of u_bar on eta over the wave's passage;
 //   - 3D: the stations of a line, a uniform current's exact answer and the same mass balance across a channel;
 //   - a dry station (eta NaN, d = u = q = 0);
-//   - input errors (exit code 2 through the program);
-//   - the program's probes.csv: the same bytes on 1 and 2 threads and after a resume.
+// Input errors: tests/unit/test_section_probe_input.cpp; through the program (exit code 2, probes.csv the same bytes
+// on 1 and 2 threads and after a resume): tests/end_to_end/test_section_probe_cli.cpp.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -22,34 +22,12 @@
 #include "probe/probes.h"
 #include "scene/scene_loader.h"
 #include "sim/simulation.h"
+#include "scene_builders.h"
 
 namespace cdmpm::testing {
 namespace {
 
 constexpr double g = 9.81, rho = 1000;
-
-// A tank of still depth h, length L (and width W in 3D), with the water over 0 <= x < w raised by a, the
-// section probe "s" given by `section` and grid spacing dx.
-nlohmann::json tank(int dim, double h, double a, double w, double L, double W, double dx, const nlohmann::json& section) {
-  auto vec = [&](double x, double y, double z) {
-    return dim == 2 ? nlohmann::json{x, z} : nlohmann::json{x, y, z};
-  };
-  nlohmann::json probe = section;
-  probe["name"] = "s";
-  probe["type"] = "section";
-  return {{"dim", dim},
-          {"domain", {{"size", vec(L, W, 1.5 * h)}, {"dx", dx}}},
-          {"time", {{"end", 1.0}, {"frame_interval", 1.0}, {"cfl", 0.4}, {"wave_cfl", 0.4}}},
-          {"gravity", vec(0, 0, -g)},
-          {"materials", {{"water", {{"type", "water"}, {"density", rho}, {"bulk_modulus", 1e6 * h}, {"gamma", 7}}}}},
-          {"bodies", {{{"material", "water"}, {"particles_per_cell", dim == 2 ? 4 : 8},
-                       {"shape", {{"type", "box"}, {"min", vec(0, 0, 0)}, {"max", vec(w, W, h + a)}}}},
-                      {{"material", "water"}, {"particles_per_cell", dim == 2 ? 4 : 8},
-                       {"shape", {{"type", "box"}, {"min", vec(w, 0, 0)}, {"max", vec(L, W, h)}}}}}},
-          {"boundaries", {{{"type", "walls"}, {"condition", "slip"}}}},
-          {"probes", {{"list", {probe}}}},
-          {"output", {{"frames", false}}}};
-}
 
 // Volume of the water beyond x = X [m^2 in 2D, m^3 in 3D] from the particles' volumes V = J m / rho0, each
 // counted with the fraction of its cell-wide slab [x - dx/2, x + dx/2] beyond X: a linear ramp, so a lattice of
@@ -117,7 +95,7 @@ std::vector<double> sample_on_1_and_2_threads(const Probes<dim>& probes, const S
 TEST(SectionProbe, LongWaveFluxBalancesTheVolumeAndFollowsLinearTheory) {
   const double h = 0.5, a = h / 8, w = 6 * h, L = 20 * h, X = 10 * h, T = 22 * h / std::sqrt(g * h);
   const double interval = 0.01;
-  nlohmann::json j = tank(2, h, a, w, L, 0, h / 8, {{"position", {X}}});
+  nlohmann::json j = section_tank(2, h, a, w, L, 0, h / 8, {{"position", {X}}});
   j["probes"]["list"].push_back({{"name", "gauge"}, {"type", "wave_gauge"}, {"position", {X}}});
   const Scene scene = scene_from_json(j, "<section_2d>");
   Simulation<2> sim(scene);
@@ -176,7 +154,7 @@ TEST(SectionProbe, LongWaveFluxBalancesTheVolumeAndFollowsLinearTheory) {
 // u = U, v = V, q = h (U, V) exactly (to rounding); the same bits on 1 and 2 threads.
 TEST(SectionProbe, Line3DStationsReadAUniformCurrent) {
   const double h = 0.5, U = 0.3, V = -0.2;
-  nlohmann::json j = tank(3, h, 0, 0.5, 2, 1, 0.1, {{"start", {0.3, 0.2}}, {"end", {1.7, 0.8}}, {"points", 5}});
+  nlohmann::json j = section_tank(3, h, 0, 0.5, 2, 1, 0.1, {{"start", {0.3, 0.2}}, {"end", {1.7, 0.8}}, {"points", 5}});
   j["bodies"].erase(0);
   j["bodies"][0]["shape"]["min"] = {0, 0, 0};
   j["bodies"][0]["velocity"] = {U, V, 0};
@@ -214,7 +192,7 @@ TEST(SectionProbe, DryStationReadsNaNAndZeros) {
   for (const bool given : {false, true}) {
     nlohmann::json section = {{"position", {3.5}}};
     if (given) section["still_level"] = 1.0;
-    nlohmann::json j = tank(2, 1, 0.1, 1, 4, 0, 0.1, section);
+    nlohmann::json j = section_tank(2, 1, 0.1, 1, 4, 0, 0.1, section);
     j["bodies"][1]["shape"]["max"] = {3.0, 1.0};  // the water ends at x = 3, the section stands at 3.5
     const Scene scene = scene_from_json(j, "<section_dry>");
     Simulation<2> sim(scene);
@@ -237,7 +215,7 @@ TEST(SectionProbe, DryStationReadsNaNAndZeros) {
 TEST(SectionProbe, Line3DDischargeBalancesTheVolume) {
   const double h = 0.5, a = h / 4, w = 2 * h, L = 8 * h, W = h, X = 4 * h, T = 8 * h / std::sqrt(g * h);
   const Scene scene = scene_from_json(
-      tank(3, h, a, w, L, W, h / 4, {{"start", {X, 0}}, {"end", {X, W}}, {"points", 5}}), "<section_3d_balance>");
+      section_tank(3, h, a, w, L, W, h / 4, {{"start", {X, 0}}, {"end", {X, W}}, {"points", 5}}), "<section_3d_balance>");
   Simulation<3> sim(scene);
   Probes<3> probes(scene, sim);
   std::vector<double> t, Q, beyond;
@@ -257,65 +235,6 @@ TEST(SectionProbe, Line3DDischargeBalancesTheVolume) {
   std::printf("3D section: %zu particles, %lld steps; integral of Q dt %.6g m^3, volume change %.6g m^3 (%+.2f %%)\n",
               sim.particles.size(), sim.steps(), passed, moved, 100 * (passed / moved - 1));
   EXPECT_NEAR(passed, moved, 0.02 * moved) << "integral of Q dt " << passed << ", volume change " << moved;
-}
-
-// Input errors: the loader names the key and what it expected.
-TEST(SectionProbe, InputErrorsNameTheKey) {
-  auto refused = [](const nlohmann::json& j) -> std::string {
-    try {
-      scene_from_json(j, "section.json");
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "accepted";
-  };
-  auto has = [](const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; };
-  std::string m = refused(tank(2, 1, 0.1, 1, 4, 0, 0.1, {{"position", {5.0}}}));
-  EXPECT_TRUE(has(m, "section.json") && has(m, "probes.list[0].position") && has(m, "inside the domain")) << m;
-  m = refused(tank(2, 1, 0.1, 1, 4, 0, 0.1, {{"position", {2.0}}, {"points", 3}}));
-  EXPECT_TRUE(has(m, "probes.list[0].points") && has(m, "unknown key")) << m;
-  m = refused(tank(2, 1, 0.1, 1, 4, 0, 0.1, {{"position", {2.0, 1.0}}}));
-  EXPECT_TRUE(has(m, "probes.list[0].position")) << m;
-  m = refused(tank(3, 1, 0.1, 1, 4, 1, 0.2, {{"start", {1.0, 0.0}}, {"end", {1.0, 2.0}}, {"points", 3}}));
-  EXPECT_TRUE(has(m, "probes.list[0].end") && has(m, "inside the domain")) << m;
-  m = refused(tank(3, 1, 0.1, 1, 4, 1, 0.2, {{"start", {1.0, 0.5}}, {"end", {1.0, 0.5}}, {"points", 3}}));
-  EXPECT_TRUE(has(m, "probes.list[0].end") && has(m, "different from start")) << m;
-  m = refused(tank(3, 1, 0.1, 1, 4, 1, 0.2, {{"start", {1.0, 0.0}}, {"end", {1.0, 1.0}}, {"points", 1}}));
-  EXPECT_TRUE(has(m, "probes.list[0].points") && has(m, "integer")) << m;
-  m = refused(tank(3, 1, 0.1, 1, 4, 1, 0.2, {{"start", {1.0, 0.0}}, {"end", {1.0, 1.0}}}));
-  EXPECT_TRUE(has(m, "probes.list[0].points") && has(m, "required")) << m;
-  m = refused(tank(3, 1, 0.1, 1, 4, 1, 0.2, {{"position", {1.0, 0.0}}}));
-  EXPECT_TRUE(has(m, "probes.list[0].position") && has(m, "unknown key")) << m;
-  m = refused(tank(2, 1, 0.1, 1, 4, 0, 0.1, {{"position", {2.0}}, {"still_level", "high"}}));
-  EXPECT_TRUE(has(m, "probes.list[0].still_level") && has(m, "a number")) << m;
-}
-
-// The program refuses a section outside the domain with exit code 2, naming file and key.
-TEST(SectionProbe, CliRefusesASectionOutsideTheDomainWithExit2) {
-  TempDir dir;
-  const std::string file = dir / "section.json";
-  std::ofstream(file) << tank(2, 1, 0.1, 1, 4, 0, 0.1, {{"position", {4.5}}}).dump();
-  const CliResult r = run_cdmpm({"check", file});
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("probes.list[0].position"), std::string::npos) << r.output;
-}
-
-// The record is the same bytes on 1 and 2 threads and after a resume half-way (the still level measured at t = 0
-// comes back from the checkpoint, not from the state at the resume).
-TEST(SectionProbe, CliRecordIsTheSameOnOtherThreadsAndAfterResume) {
-  TempDir dir;
-  const std::string file = dir / "section.json";
-  nlohmann::json j = tank(2, 0.5, 0.0625, 1, 3, 0, 0.0625, {{"position", {1.25}}});
-  j["time"] = {{"end", 0.4}, {"frame_interval", 0.1}};
-  j["probes"]["interval"] = 0.01;
-  std::ofstream(file) << j.dump();
-  ASSERT_EQ(run_straight_other_threads_and_resumed(dir, file, {"--quiet"}, "1", "2", "0.2", "0.4"), "");
-  const std::string full = read_bytes(dir / "full/probes.csv");
-  EXPECT_EQ(full, read_bytes(dir / "other/probes.csv"));
-  EXPECT_EQ(full, read_bytes(dir / "half/probes.csv"));
-  const auto p = read_probes(dir / "full/probes.csv");
-  EXPECT_EQ(p.at("s_eta").front(), 0);
-  EXPECT_GT(*std::max_element(p.at("s_eta").begin(), p.at("s_eta").end()), 0.01);  // the wave reached it
 }
 
 }  // namespace

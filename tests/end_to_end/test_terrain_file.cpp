@@ -1,8 +1,7 @@
 // test_terrain_file.cpp - terrain from files (src/terrain/terrain_file.h): CSV profiles and ESRI ASCII grids
 // parse to the right numbers (rows flipped northwards, xllcorner and xllcenter giving the same nodes), are
 // placed in the domain with the file origin and cropped to it, and every malformed file of tests/bad_terrain/
-// is refused with a message naming the file and the line; through the program, `cdmpm check` and `cdmpm run`
-// on a scene with a bad terrain file exit with code 2, name the file and line and write nothing.
+// is refused with a message naming the file and the line. Through the program: tests/engine/test_terrain_cli.cpp.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -163,20 +162,6 @@ TEST(TerrainFile, EqipSermiaProfileKeepsThePublishedNumbers) {
   EXPECT_EQ(deepest, 135);
   EXPECT_EQ(shallowest, 35);
   EXPECT_EQ(top, 60);
-}
-
-TEST(TerrainCli, BadTerrainFileExitsWithCode2NamingFileAndLineAndWritesNothing) {
-  TempDir dir;
-  const std::string scene = terrain_dir("scene_bad_profile_2d.json");
-  for (const std::vector<std::string>& args : {std::vector<std::string>{"check", scene},
-                                               std::vector<std::string>{"run", scene, "--out", dir / "out"}}) {
-    const CliResult r = run_cdmpm(args);
-    EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find("scene_bad_profile_2d.json: boundaries[1].file: "), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("bad_terrain/profile_nan.csv:4: expected a finite number (elevation), got 'nan'"),
-              std::string::npos) << r.output;
-  }
-  EXPECT_TRUE(fs::is_empty(dir.path)) << "something was written";
 }
 
 }  // namespace
