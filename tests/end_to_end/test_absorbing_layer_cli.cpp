@@ -11,6 +11,7 @@
 
 namespace cdmpm::testing {
 namespace {
+
 // The program refuses a bad layer with exit code 2, naming the file and the key, and writes nothing.
 TEST(AbsorbingBoundary, CliRefusesBadLayerWithExitCode2) {
   TempDir dir;

@@ -17,6 +17,7 @@
 
 namespace cdmpm {
 namespace {
+
 // ---- the program: threads and resume ---------------------------------------------------------------------------
 
 TEST(CrackStartsCli, SameRecordOnOneAndTwoThreadsAndAfterAResume) {

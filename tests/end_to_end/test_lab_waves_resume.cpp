@@ -11,6 +11,7 @@
 
 namespace cdmpm::testing {
 namespace {
+
 // The capsizing block (hinge, tilt) resumed at half time and on two threads gives the same state bit for bit.
 TEST(LabWaves, RigidResumeAndThreadCountGiveBitwiseIdenticalState) {
   TempDir dir;

@@ -26,6 +26,7 @@
 #include "scene_builders.h"
 
 namespace cdmpm {
+
 // Named, not anonymous: its constants (g, dx, h, ...) have the names of other test files' constants, and a unity
 // batch shares the anonymous namespace of its files.
 namespace settle_test {

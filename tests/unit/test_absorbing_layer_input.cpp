@@ -11,6 +11,7 @@
 
 namespace cdmpm::testing {
 namespace {
+
 std::string refused(const nlohmann::json& boundary, const nlohmann::json& wall_faces = {"x-", "x+", "y-"}) {
   nlohmann::json j = {{"dim", 2},
                       {"domain", {{"size", {20.0, 1.5}}, {"dx", 0.125}}},

@@ -16,6 +16,7 @@
 
 namespace cdmpm {
 namespace {
+
 // Hydrostatics of the estimate: the moment's slope at zero is -rho_w g A GM (the metacentric height of Archimedes'
 // floating body), and GM changes sign at w/h = sqrt(6 (d/h)(1 - d/h)).
 TEST(CapsizeEstimate, MomentMatchesTheMetacentricHeight) {

@@ -20,6 +20,7 @@
 
 namespace cdmpm {
 namespace {
+
 // ---- the mode rule --------------------------------------------------------------------------------------------
 
 // p, q of a Cauchy stress in the record's convention.
