@@ -4,10 +4,10 @@ submergence ratios D/H and compares the first iceberg's length L/H with the bend
 paper:
     linear (reference paper):  L/H = 2 sigma_t / (3 rho_i g H (1 - D/H))
     cantilever, full buoyancy:  L/H = sqrt(sigma_t / (3 g (rho_i H - rho_w D)))
-sigma_t is the scene's tensile_strength; tests/unit/test_ice_bar.cpp (IceBar.*) measures that the MPM
+sigma_t is the scene's tensile_strength; tests/engine/test_ice_bar.cpp (IceBar.*) measures that the MPM
 ice reaches it in uniaxial tension (peak within 5 %). The linear model is the shear model of the overhang: its
 largest shear stress 3 V / (2 H) set equal to a strength; with the ice's own pure-shear strength tau_s
-(src/material/cohesive_cam_clay.h shear_strength, measured by tests/unit/test_crack_starts.cpp SimpleShear.*):
+(src/material/cohesive_cam_clay.h shear_strength, measured by tests/engine/test_crack_starts.cpp SimpleShear.*):
     shear model:                L/H = 2 tau_s / (3 rho_i g H (1 - D/H))      (column model_shear)
 Each run's recorded crack start (summary.json first_iceberg.crack_start, docs/ice.md) gives the columns
 crack_mode (tension / shear), crack_time, crack_x_over_H (from the bed edge, positive beyond it) and

@@ -1,5 +1,5 @@
 // capsize.h - the inviscid estimate of how fast a floating rectangular slab capsizes (2D, per unit length), the
-// reference of the capsizing tests (tests/unit/test_capsize.cpp, docs/validation.md#capsizing-slabs).
+// reference of the capsizing tests (tests/validation/test_capsize.cpp, docs/validation.md#capsizing-slabs).
 //
 // Hydrostatics. A slab of width w (horizontal when upright) and height h, density rho_b < rho_w, floats with the
 // submerged area A = rho_b w h / rho_w. Turned by theta about its centre G, the waterline is the height at which

@@ -5,7 +5,7 @@
 //   Crevasses     the realised field has the scene's spacing and depth statistics, is reproducible from its seed,
 //                 varies along y in 3D; seeding leaves every crevasse empty and the rest of the ice intact, and
 //                 the missing ice is the crevasses' area; bad keys are refused naming the key;
-//   CrevassesCli  the program exits with 2 on a bad key, and writes crevasses.csv.
+// Through the program: tests/end_to_end/test_crevasses_cli.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +18,7 @@
 #include "shape/crevasse_field.h"
 #include "shape/simplex_noise.h"
 #include "sim/simulation.h"
+#include "scene_builders.h"
 
 namespace cdmpm {
 namespace {
@@ -192,24 +193,6 @@ TEST(Crevasses, TheFieldIsReproducibleFromItsSeed) {
   EXPECT_GT(differ, 90);
 }
 
-nlohmann::json ice_scene(int dim, const nlohmann::json& crevasses, const std::string& material = "ice") {
-  const bool d3 = dim == 3;
-  nlohmann::json size = d3 ? nlohmann::json{84.0, 20.0, 24.0} : nlohmann::json{420.0, 120.0};
-  nlohmann::json lo = d3 ? nlohmann::json{2.0, 0.0, 0.0} : nlohmann::json{10.0, 0.0};
-  nlohmann::json hi = d3 ? nlohmann::json{82.0, 20.0, 20.0} : nlohmann::json{410.0, 100.0};
-  nlohmann::json body = {{"material", material}, {"particles_per_cell", d3 ? 1 : 4},
-                         {"shape", {{"type", "box"}, {"min", lo}, {"max", hi}}}, {"crevasses", crevasses}};
-  return {{"dim", dim},
-          {"domain", {{"size", size}, {"dx", 2.0}}},
-          {"time", {{"end", 0.1}, {"frame_interval", 0.1}}},
-          {"materials",
-           {{"ice", {{"type", "ice"}, {"density", 917}, {"youngs_modulus", 1e9}, {"poissons_ratio", 0.3}, {"M", 1.85},
-                     {"beta", 0.3}, {"xi", 1}, {"tensile_strength", 1e5}}},
-            {"water", {{"type", "water"}, {"density", 1000}, {"bulk_modulus", 1e6}}}}},
-          {"bodies", {body}},
-          {"boundaries", {{{"type", "walls"}}}}};
-}
-
 // The 400 m x 100 m slab on a lattice of h = 1 m (dx 2, 4 particles per cell): 400 x 100 points. Every crevasse
 // i of crevasses.csv is a slot |x - x_i| < w/2, y > 100 - d_i: no particle lies in one, every lattice point
 // outside them holds one, and the missing particles are the slots' area w d_i / h^2 up to the rounding of each
@@ -217,7 +200,7 @@ nlohmann::json ice_scene(int dim, const nlohmann::json& crevasses, const std::st
 TEST(Crevasses, SeedingEmptiesTheCrevassesAndKeepsTheRestOfTheIce) {
   const nlohmann::json c = {{"seed", 3}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 30}, {"depth_std", 10},
                             {"width", 4}};
-  const Scene s = scene_from_json(ice_scene(2, c), "crevassed.json");
+  const Scene s = scene_from_json(testing::crevassed_ice_scene(2, c), "crevassed.json");
   ASSERT_TRUE(s.bodies[0].crevasses);
   const auto st = s.bodies[0].crevasses->stations();
   ASSERT_EQ(st.size(), 10u);
@@ -248,10 +231,10 @@ TEST(Crevasses, SeedingEmptiesTheCrevassesAndKeepsTheRestOfTheIce) {
 // (single-precision reals: 1e-6 relative of the bulk modulus's 1e6 Pa, 1 Pa). The ice is what it is dry.
 TEST(Crevasses, WaterFillsEachCrevasseToItsLevelAtRestAndHydrostatic) {
   nlohmann::json c = {{"seed", 3}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 30}, {"depth_std", 10}, {"width", 4}};
-  const Scene dry = scene_from_json(ice_scene(2, c), "dry.json");
+  const Scene dry = scene_from_json(testing::crevassed_ice_scene(2, c), "dry.json");
   c["water_depth"] = 20;
   c["water_material"] = "water";
-  const Scene s = scene_from_json(ice_scene(2, c), "wet.json");
+  const Scene s = scene_from_json(testing::crevassed_ice_scene(2, c), "wet.json");
   const auto st = s.bodies[0].crevasses->stations();
   const int water = s.material_index("water");
   auto level_at = [&](double x, double y, double& level) {
@@ -298,7 +281,7 @@ TEST(Crevasses, DepthsCountFromEachColumnsTopOrTheGivenSurface) {
     nlohmann::json c = {{"seed", 4}, {"spacing", 40}, {"spacing_std", 8}, {"depth", 20}, {"depth_std", 5},
                         {"width", 4}, {"region", {210, 410}}};
     if (given_surface) c["surface"] = 70;
-    nlohmann::json j = ice_scene(2, c);
+    nlohmann::json j = testing::crevassed_ice_scene(2, c);
     j["bodies"][0]["shape"] = {{"type", "polygon"}, {"vertices", {{10, 0}, {410, 0}, {410, 80}, {10, 100}}}};
     const Scene s = scene_from_json(j, "sloping.json");
     const auto st = s.bodies[0].crevasses->stations();
@@ -334,7 +317,7 @@ TEST(Crevasses, DepthsCountFromEachColumnsTopOrTheGivenSurface) {
 TEST(Crevasses, ThreeDCrevassesVaryAlongYAndAreEmpty) {
   const nlohmann::json c = {{"seed", 9}, {"spacing", 20}, {"spacing_std", 3}, {"depth", 8}, {"depth_std", 3},
                             {"width", 4}, {"length", 10}};
-  const Scene s = scene_from_json(ice_scene(3, c), "crevassed3d.json");
+  const Scene s = scene_from_json(testing::crevassed_ice_scene(3, c), "crevassed3d.json");
   const CrevasseField& f = *s.bodies[0].crevasses;
   ASSERT_EQ(f.count(), 4);
   auto in_crevasse = [&](double x, double y, double z) {
@@ -405,7 +388,7 @@ TEST(Crevasses, BadKeysAreRefusedNamingTheKey) {
     cr[c.key] = c.value;
     if (c.key == "spacing" && c.value.get<double>() > 0) cr["width"] = 5e-5;
     try {
-      scene_from_json(ice_scene(2, cr), "bad.json");
+      scene_from_json(testing::crevassed_ice_scene(2, cr), "bad.json");
       ADD_FAILURE() << c.key << " = " << c.value.dump() << " accepted";
     } catch (const SceneError& e) {
       EXPECT_NE(std::string(e.what()).find("bad.json: " + c.path), std::string::npos) << e.what();
@@ -413,35 +396,13 @@ TEST(Crevasses, BadKeysAreRefusedNamingTheKey) {
   }
   nlohmann::json missing = good;
   missing.erase("spacing");
-  EXPECT_THROW(scene_from_json(ice_scene(2, missing), "bad.json"), SceneError);
+  EXPECT_THROW(scene_from_json(testing::crevassed_ice_scene(2, missing), "bad.json"), SceneError);
   try {
-    scene_from_json(ice_scene(2, good, "water"), "bad.json");
+    scene_from_json(testing::crevassed_ice_scene(2, good, "water"), "bad.json");
     ADD_FAILURE() << "crevasses accepted on a water body";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.json: bodies[0].crevasses"), std::string::npos) << e.what();
   }
-}
-
-TEST(CrevassesCli, BadKeyExitsWithTwoAndAGoodSceneWritesCrevassesCsv) {
-  using testing::CliResult, testing::TempDir, testing::run_cdmpm;
-  TempDir dir;
-  nlohmann::json c = {{"seed", 1}, {"spacing", 40}, {"depth", -5}, {"width", 4}};
-  std::ofstream(dir / "bad.json") << ice_scene(2, c).dump();
-  const CliResult bad = run_cdmpm({"run", dir / "bad.json", "--out", dir / "bad", "--quiet"});
-  EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("bodies[0].crevasses.depth"), std::string::npos) << bad.output;
-  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
-  c["depth"] = 30;
-  nlohmann::json scene = ice_scene(2, c);
-  scene["output"] = {{"frames", false}};
-  std::ofstream(dir / "good.json") << scene.dump();
-  const CliResult good = run_cdmpm({"run", dir / "good.json", "--out", dir / "good", "--quiet", "--steps", "1"});
-  ASSERT_EQ(good.exit_code, 0) << good.output;
-  const CsvTable t = read_csv_table(dir / "good/crevasses.csv");
-  EXPECT_EQ(t.header, (std::vector<std::string>{"body", "crevasse", "x", "depth", "width", "clipped", "water_depth"}));
-  ASSERT_EQ(t.rows.size(), 10u);
-  for (double d : t.numbers("depth")) EXPECT_NEAR(d, 30, 1e-9);  // no depth_std: every crevasse at the mean
-  for (double w : t.numbers("width")) EXPECT_EQ(w, 4);
 }
 
 }  // namespace

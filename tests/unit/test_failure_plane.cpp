@@ -16,7 +16,9 @@
 #include "probe/failure_plane.h"
 
 namespace cdmpm {
-namespace {
+// Named, not anonymous: its constants (g, dx, h, ...) have the names of other test files' constants, and a unity
+// batch shares the anonymous namespace of its files.
+namespace failure_plane_test {
 
 constexpr Real dx = 2.5, h = 1.25;  // two particles per cell per axis
 constexpr double top = 200, width = 75, dip = 54;
@@ -108,5 +110,5 @@ TEST(FailurePlane, BlockOfOneRowHasNoPlane) {
   EXPECT_TRUE(std::isnan(g.width));
 }
 
-}  // namespace
+}  // namespace failure_plane_test
 }  // namespace cdmpm

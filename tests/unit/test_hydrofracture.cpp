@@ -5,7 +5,7 @@
 //                     above z_w, outside the region, with d = 0 and without the key the stress is the skeleton's, bit
 //                     for bit; the pressure field agrees with the stress; g comes from the scene's gravity; bad keys
 //                     are refused naming the key;
-//   HydrofractureCli  the program exits with 2 on a non-physical water density, naming the key, and writes nothing.
+// Through the program: tests/end_to_end/test_hydrofracture_cli.cpp.
 // Tolerances: tau and sigma are a handful of floating-point operations on p_w and the elastic stress, so they agree
 // with the formula to a few ulps of the largest term: 1e-12 relative (double precision).
 #include <gtest/gtest.h>
@@ -17,29 +17,12 @@
 #include "cli_helpers.h"
 #include "material/stress.h"
 #include "scene/scene_loader.h"
+#include "scene_builders.h"
 
 namespace cdmpm {
 namespace {
 
 constexpr double kRel = std::is_same_v<Real, double> ? 1e-12 : 1e-5;
-
-// A 2D scene with one ice material; `hydrofracture` is added to it unless null.
-nlohmann::json ice_scene(const nlohmann::json& hydrofracture, double gravity = -9.81, bool plastic = true) {
-  nlohmann::json ice = {{"type", "ice"}, {"density", 917}, {"youngs_modulus", 1e9}, {"poissons_ratio", 0.3}};
-  if (plastic) {
-    ice.update({{"M", 1.85}, {"beta", 0.075}, {"xi", 5}, {"tensile_strength", 0.7e6}});
-  } else {
-    ice["plastic"] = false;
-  }
-  if (!hydrofracture.is_null()) ice["hydrofracture"] = hydrofracture;
-  return {{"dim", 2},
-          {"domain", {{"size", {400.0, 300.0}}, {"dx", 10.0}}},
-          {"time", {{"end", 0.1}, {"frame_interval", 0.1}}},
-          {"gravity", {0.0, gravity}},
-          {"materials", {{"ice", ice}}},
-          {"bodies", {{{"material", "ice"}, {"particles_per_cell", 1}, {"shape", {{"type", "box"}, {"min", {100, 50}}, {"max", {300, 250}}}}}}},
-          {"boundaries", {{{"type", "walls"}}}}};
-}
 
 const Ice& ice_of(const Scene& s) { return std::get<Ice>(s.materials.at(0).model); }
 
@@ -56,7 +39,7 @@ const nlohmann::json kKey = {{"water_level", 250}, {"water_density", 1025}};
 // nothing (tau_ice(I) = 0 exactly), so sigma = -d p_w I with p_w = rho_w g 100 m = 1.0055 MPa and d = 1 - 1e-4 kappa /
 // p0_initial (0.987 for this ice): -p_w I to that residual, and to round-off once d is accounted for.
 TEST(Hydrofracture, FullyDamagedParticleBelowTheWaterCarriesMinusTheWaterPressure) {
-  const Scene s = scene_from_json(ice_scene(kKey), "hf.json");
+  const Scene s = scene_from_json(testing::hydrofracture_ice_scene(kKey), "hf.json");
   const Ice& ice = ice_of(s);
   ASSERT_TRUE(ice.hydrofracture.on);
   EXPECT_EQ(ice.hydrofracture.gravity, Real(9.81));
@@ -77,7 +60,7 @@ TEST(Hydrofracture, FullyDamagedParticleBelowTheWaterCarriesMinusTheWaterPressur
 // Partly damaged ice under a general elastic F: sigma - sigma_ice = -d p_w I to round-off, whatever F; the Kirchhoff
 // stress p2g uses is J = det F_e times it; the pressure is the skeleton's (plane strain: -tr(sigma_3x3)/3) plus d p_w.
 TEST(Hydrofracture, DamagedParticleAddsMinusDamageTimesWaterPressureToTheSkeletonsStress) {
-  const Scene s = scene_from_json(ice_scene(kKey), "hf.json");
+  const Scene s = scene_from_json(testing::hydrofracture_ice_scene(kKey), "hf.json");
   const Ice& ice = ice_of(s);
   Mat<2> F;
   F << 1.0004, 0.0003, -0.0002, 0.9993;
@@ -104,8 +87,8 @@ TEST(Hydrofracture, DamagedParticleAddsMinusDamageTimesWaterPressureToTheSkeleto
 TEST(Hydrofracture, AboveTheWaterOutsideTheRegionIntactOrOffTheStressIsTheSkeletons) {
   nlohmann::json key = kKey;
   key["region"] = {120, 280};
-  const Scene s = scene_from_json(ice_scene(key), "hf.json");
-  const Scene off = scene_from_json(ice_scene(nullptr), "off.json");
+  const Scene s = scene_from_json(testing::hydrofracture_ice_scene(key), "hf.json");
+  const Scene off = scene_from_json(testing::hydrofracture_ice_scene(nullptr), "off.json");
   EXPECT_FALSE(ice_of(off).hydrofracture.on);
   const Ice& ice = ice_of(s);
   Mat<2> F;
@@ -133,7 +116,7 @@ TEST(Hydrofracture, AboveTheWaterOutsideTheRegionIntactOrOffTheStressIsTheSkelet
 TEST(Hydrofracture, WaterPressureUsesTheScenesGravityAndTheWatersDensity) {
   nlohmann::json key = kKey;
   key["water_density"] = 1000;
-  const Scene s = scene_from_json(ice_scene(key, -3.7), "mars.json");
+  const Scene s = scene_from_json(testing::hydrofracture_ice_scene(key, -3.7), "mars.json");
   const Ice& ice = ice_of(s);
   EXPECT_EQ(ice.hydrofracture.gravity, Real(3.7));
   EXPECT_NEAR(ice.hydrofracture.water_pressure<2>(Vec<2>(200, 50)), 1000 * 3.7 * 200, kRel * 1000 * 3.7 * 200);
@@ -162,22 +145,12 @@ TEST(Hydrofracture, BadKeysAreRefusedNamingTheKey) {
       {250, -9.81, true, "materials.ice.hydrofracture"}};                     // not an object
   for (const auto& c : cases) {
     try {
-      scene_from_json(ice_scene(c.key, c.gravity, c.plastic), "bad.json");
+      scene_from_json(testing::hydrofracture_ice_scene(c.key, c.gravity, c.plastic), "bad.json");
       ADD_FAILURE() << c.key.dump() << " accepted";
     } catch (const SceneError& e) {
       EXPECT_NE(std::string(e.what()).find("bad.json: " + c.path), std::string::npos) << e.what();
     }
   }
-}
-
-TEST(HydrofractureCli, NonPhysicalWaterDensityExitsWithTwoNamingTheKey) {
-  using testing::CliResult, testing::TempDir, testing::run_cdmpm;
-  TempDir dir;
-  std::ofstream(dir / "bad.json") << ice_scene({{"water_level", 250}, {"water_density", -1}}).dump();
-  const CliResult bad = run_cdmpm({"run", dir / "bad.json", "--out", dir / "bad", "--quiet"});
-  EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("materials.ice.hydrofracture.water_density"), std::string::npos) << bad.output;
-  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
 }  // namespace
