@@ -48,6 +48,8 @@ struct Slab {
     const double d = draft();
     return width * width / (12 * d) - (height - d) / 2;
   }
+  // The slab's own roll inertia about G, I_G = m (w^2 + h^2) / 12.
+  double body_inertia() const { return mass() * (width * width + height * height) / 12; }
   // Roll inertia about G with the water's added inertia (see the header).
   double roll_inertia() const {
     const double m = mass(), d = draft(), w = width, h = height, rw = rho_water;
@@ -56,7 +58,7 @@ struct Slab {
     const double m_s = 0.5 * rw * std::numbers::pi * az * az;
     const double i_o = 0.5 * rw * std::numbers::pi * std::pow(az * az - ax * ax, 2) / 8;
     const double l = d - h / 2;  // the waterline point O above G
-    return m * (w * w + h * h) / 12 + i_o + m * m_s * l * l / (m + m_s);
+    return body_inertia() + i_o + m * m_s * l * l / (m + m_s);
   }
 
   // Area and first moments of the part of the slab turned by theta (about G = origin) below the height zw.

@@ -52,7 +52,7 @@ double time_to(const Record& r, double a) {
 void expect_narrow_slab_capsizes(const std::vector<std::string>& sets) {
   const capsize::Slab s{0.6, 1.0, 917, 1025};
   const double t_est = s.time_to(5 * deg, 45 * deg);
-  const double t_dry = t_est * std::sqrt(s.mass() * (0.36 + 1) / 12 / s.roll_inertia());  // no water inertia
+  const double t_dry = t_est * std::sqrt(s.body_inertia() / s.roll_inertia());  // no water inertia
   const Record r = run_slab(sets, 2 * t_est + 0.5);
   const double t45 = time_to(r, 45);
   std::printf("w/h 0.6 passes 45 deg at %.2f s; inviscid estimate %.2f s (no water inertia %.2f s)\n", t45, t_est,
