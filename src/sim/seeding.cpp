@@ -75,7 +75,7 @@ struct Tilted {
   }
   bool contains(const DVec<dim>& x) const {
     const Vec<dim> u = pivot + R.transpose() * (x.template cast<Real>() - pivot);
-    return shape->contains(u.template cast<double>()) && (!track || track->occupied(x[0], x[dim - 1]));
+    return shape->contains(u.template cast<double>()) && (!track || track->occupied(x[0], x[vertical_axis<dim>]));
   }
 };
 
